@@ -1,0 +1,157 @@
+// The CUDA half of the backend: memory, synchronisation, and the few
+// primitives (sort, scan, reduce) that come from CUB.
+#include <cuda_runtime.h>
+
+#include <cub/cub.cuh>
+#include <thrust/iterator/transform_iterator.h>
+#include <string>
+
+#include "Backend/CudaBackend.h"
+#include "Base/Error.h"
+
+namespace soak::cuda {
+
+namespace {
+void check(cudaError_t e, const char* what) {
+  if (e != cudaSuccess) throw DeviceError(std::string("CUDA error in ") + what + ": " + cudaGetErrorString(e));
+}
+
+// Scratch memory for CUB, grown on demand and kept.
+struct Scratch {
+  void* ptr = nullptr;
+  std::size_t bytes = 0;
+  void* get(std::size_t need) {
+    if (need > bytes) {
+      if (ptr) cudaFree(ptr);
+      bytes = need + need / 2;
+      check(cudaMalloc(&ptr, bytes), "scratch allocation");
+    }
+    return ptr;
+  }
+};
+Scratch& scratch() {
+  static Scratch s;
+  return s;
+}
+template <class T>
+struct HostValue {
+  T* dev = nullptr;
+  HostValue() { check(cudaMalloc(&dev, sizeof(T)), "result allocation"); }
+  ~HostValue() { cudaFree(dev); }
+  T read() {
+    T v{};
+    check(cudaMemcpy(&v, dev, sizeof(T), cudaMemcpyDeviceToHost), "reading a reduction");
+    return v;
+  }
+};
+struct MaxOp {
+  __device__ float operator()(float a, float b) const { return a > b ? a : b; }
+};
+struct MinOp {
+  __device__ float operator()(float a, float b) const { return a < b ? a : b; }
+};
+struct ToDouble {
+  __device__ double operator()(float a) const { return double(a); }
+};
+}  // namespace
+
+bool built() { return true; }
+
+bool available(std::string* why) {
+  int count = 0;
+  cudaError_t e = cudaGetDeviceCount(&count);
+  if (e != cudaSuccess || count == 0) {
+    if (why) *why = std::string("no usable CUDA GPU on this machine (") +
+                    (e != cudaSuccess ? cudaGetErrorString(e) : "0 devices") + ")";
+    cudaGetLastError();
+    return false;
+  }
+  return true;
+}
+
+std::string description() {
+  int dev = 0;
+  cudaDeviceProp p{};
+  if (cudaGetDevice(&dev) != cudaSuccess || cudaGetDeviceProperties(&p, dev) != cudaSuccess) return {};
+  return std::string(p.name) + " (sm_" + std::to_string(p.major) + std::to_string(p.minor) + ", " +
+         std::to_string(p.multiProcessorCount) + " SMs, " + std::to_string(p.totalGlobalMem >> 20) + " MiB)";
+}
+
+void synchronize() { check(cudaDeviceSynchronize(), "synchronize"); }
+
+void* allocate(std::size_t bytes) {
+  void* p = nullptr;
+  cudaError_t e = cudaMalloc(&p, bytes);
+  if (e != cudaSuccess) {
+    cudaGetLastError();
+    throw DeviceError("GPU out of memory allocating " + std::to_string(bytes) + " bytes (" +
+                      cudaGetErrorString(e) + ")");
+  }
+  return p;
+}
+void release(void* p) noexcept { cudaFree(p); }
+
+void copy(void* dst, const void* src, std::size_t bytes, int kind) {
+  cudaMemcpyKind k = kind == 0 ? cudaMemcpyHostToDevice : kind == 1 ? cudaMemcpyDeviceToHost : cudaMemcpyDeviceToDevice;
+  check(cudaMemcpy(dst, src, bytes, k), "memory copy");
+}
+void fill(void* dst, int value, std::size_t bytes) { check(cudaMemset(dst, value, bytes), "memset"); }
+void checkLaunch(const char* what) { check(cudaGetLastError(), what); }
+
+double reduceSum(const float* x, int n) {
+  if (n <= 0) return 0.0;
+  HostValue<double> out;
+  thrust::transform_iterator<ToDouble, const float*, double> in(x, ToDouble{});
+  std::size_t bytes = 0;
+  cub::DeviceReduce::Sum(nullptr, bytes, in, out.dev, n);
+  check(cub::DeviceReduce::Sum(scratch().get(bytes), bytes, in, out.dev, n), "reduceSum");
+  return out.read();
+}
+float reduceMax(const float* x, int n) {
+  if (n <= 0) return 0.f;
+  HostValue<float> out;
+  std::size_t bytes = 0;
+  cub::DeviceReduce::Reduce(nullptr, bytes, x, out.dev, n, MaxOp{}, -3.0e38f);
+  check(cub::DeviceReduce::Reduce(scratch().get(bytes), bytes, x, out.dev, n, MaxOp{}, -3.0e38f), "reduceMax");
+  return out.read();
+}
+float reduceMin(const float* x, int n) {
+  if (n <= 0) return 0.f;
+  HostValue<float> out;
+  std::size_t bytes = 0;
+  cub::DeviceReduce::Reduce(nullptr, bytes, x, out.dev, n, MinOp{}, 3.0e38f);
+  check(cub::DeviceReduce::Reduce(scratch().get(bytes), bytes, x, out.dev, n, MinOp{}, 3.0e38f), "reduceMin");
+  return out.read();
+}
+int exclusiveScan(const int* in, int* out, int n) {
+  if (n <= 0) return 0;
+  int last = 0;
+  check(cudaMemcpy(&last, in + n - 1, sizeof(int), cudaMemcpyDeviceToHost), "scan");
+  std::size_t bytes = 0;
+  cub::DeviceScan::ExclusiveSum(nullptr, bytes, in, out, n);
+  check(cub::DeviceScan::ExclusiveSum(scratch().get(bytes), bytes, in, out, n), "exclusiveScan");
+  int lastOut = 0;
+  check(cudaMemcpy(&lastOut, out + n - 1, sizeof(int), cudaMemcpyDeviceToHost), "scan");
+  return lastOut + last;
+}
+
+void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits) {
+  if (n <= 1) return;
+  // Double buffers live in one scratch block: keys', values', then CUB's temp.
+  std::size_t pairBytes = std::size_t(n) * sizeof(std::uint32_t);
+  cub::DoubleBuffer<std::uint32_t> k(keys, nullptr), v(values, nullptr);
+  std::size_t temp = 0;
+  cub::DeviceRadixSort::SortPairs(nullptr, temp, k, v, n, 0, keyBits);
+  std::size_t align = 256;
+  std::size_t off1 = ((pairBytes + align - 1) / align) * align;
+  char* base = static_cast<char*>(scratch().get(2 * off1 + temp));
+  k.d_buffers[1] = reinterpret_cast<std::uint32_t*>(base);
+  v.d_buffers[1] = reinterpret_cast<std::uint32_t*>(base + off1);
+  check(cub::DeviceRadixSort::SortPairs(base + 2 * off1, temp, k, v, n, 0, keyBits), "sortPairs");
+  if (k.Current() != keys) {
+    check(cudaMemcpyAsync(keys, k.Current(), pairBytes, cudaMemcpyDeviceToDevice), "sortPairs copy");
+    check(cudaMemcpyAsync(values, v.Current(), pairBytes, cudaMemcpyDeviceToDevice), "sortPairs copy");
+  }
+}
+
+}  // namespace soak::cuda

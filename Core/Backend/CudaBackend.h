@@ -1,0 +1,28 @@
+#pragma once
+// Internal: the CUDA half of the backend. Implemented in CudaBackend.cu when
+// the CUDA backend is built, and by CudaBackendStub.cpp (which refuses every
+// call) otherwise. Nothing here exposes CUDA types.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace soak::cuda {
+
+bool built();
+bool available(std::string* why);
+std::string description();
+void synchronize();
+void* allocate(std::size_t bytes);
+void release(void* p) noexcept;
+void copy(void* dst, const void* src, std::size_t bytes, int kind);  // 0 h2d, 1 d2h, 2 d2d
+void fill(void* dst, int value, std::size_t bytes);
+void checkLaunch(const char* what);
+
+double reduceSum(const float* x, int n);
+float reduceMax(const float* x, int n);
+float reduceMin(const float* x, int n);
+int exclusiveScan(const int* in, int* out, int n);
+// Stable sort of (key, value) pairs by the low `keyBits` bits of key.
+void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits);
+
+}  // namespace soak::cuda

@@ -1,0 +1,28 @@
+// CPU-only build: the CUDA backend is absent and every request for it is refused.
+#include "Backend/CudaBackend.h"
+#include "Base/Error.h"
+
+namespace soak::cuda {
+namespace {
+[[noreturn]] void refuse() {
+  throw DeviceError("this is a CPU-only build of Soak (configured without the CUDA toolkit); use --device cpu");
+}
+}  // namespace
+bool built() { return false; }
+bool available(std::string* why) {
+  if (why) *why = "this is a CPU-only build of Soak (configured without the CUDA toolkit)";
+  return false;
+}
+std::string description() { return {}; }
+void synchronize() {}
+void* allocate(std::size_t) { refuse(); }
+void release(void*) noexcept {}
+void copy(void*, const void*, std::size_t, int) { refuse(); }
+void fill(void*, int, std::size_t) { refuse(); }
+void checkLaunch(const char*) {}
+double reduceSum(const float*, int) { refuse(); }
+float reduceMax(const float*, int) { refuse(); }
+float reduceMin(const float*, int) { refuse(); }
+int exclusiveScan(const int*, int*, int) { refuse(); }
+void sortPairs(std::uint32_t*, std::uint32_t*, int, int) { refuse(); }
+}  // namespace soak::cuda

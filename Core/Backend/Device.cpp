@@ -1,0 +1,99 @@
+#include "Backend/Device.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <unordered_map>
+
+#include "Backend/CudaBackend.h"
+#include "Base/Error.h"
+
+namespace soak {
+
+namespace {
+// Sizes of live allocations, so deviceBytesInUse is exact.
+std::mutex g_mutex;
+std::unordered_map<const void*, std::size_t> g_sizes;
+std::size_t g_bytes[2] = {0, 0};
+
+void remember(Device d, const void* p, std::size_t bytes) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  g_sizes[p] = bytes;
+  g_bytes[d == Device::Cuda] += bytes;
+}
+void forget(Device d, const void* p) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  auto it = g_sizes.find(p);
+  if (it == g_sizes.end()) return;
+  g_bytes[d == Device::Cuda] -= it->second;
+  g_sizes.erase(it);
+}
+}  // namespace
+
+const char* deviceName(Device d) { return d == Device::Cuda ? "cuda" : "cpu"; }
+
+bool cudaBackendBuilt() { return cuda::built(); }
+bool cudaDeviceAvailable(std::string* why) { return cuda::available(why); }
+std::string cudaDeviceDescription() { return cuda::built() ? cuda::description() : std::string(); }
+
+Device resolveDevice(const std::string& request) {
+  if (request == "cpu") return Device::Cpu;
+  if (request == "cuda") {
+    std::string why;
+    if (!cuda::available(&why)) throw DeviceError("--device cuda: " + why);
+    return Device::Cuda;
+  }
+  if (request == "auto") return cuda::available(nullptr) ? Device::Cuda : Device::Cpu;
+  throw InputError("unknown device '" + request + "' (allowed: auto, cpu, cuda)");
+}
+
+void synchronize(Device d) {
+  if (d == Device::Cuda) cuda::synchronize();
+}
+
+void* deviceAllocate(Device d, std::size_t bytes) {
+  if (bytes == 0) bytes = 1;
+  void* p = nullptr;
+  if (d == Device::Cuda) {
+    p = cuda::allocate(bytes);
+  } else {
+    p = std::aligned_alloc(64, ((bytes + 63) / 64) * 64);
+    if (!p) throw DeviceError("out of host memory allocating " + std::to_string(bytes) + " bytes");
+  }
+  remember(d, p, bytes);
+  return p;
+}
+
+void deviceFree(Device d, void* p) noexcept {
+  if (!p) return;
+  forget(d, p);
+  if (d == Device::Cuda) cuda::release(p);
+  else std::free(p);
+}
+
+std::size_t deviceBytesInUse(Device d) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  return g_bytes[d == Device::Cuda];
+}
+
+void copyHostToDevice(Device d, void* dst, const void* src, std::size_t bytes) {
+  if (d == Device::Cuda) cuda::copy(dst, src, bytes, 0);
+  else std::memcpy(dst, src, bytes);
+}
+void copyDeviceToHost(Device d, void* dst, const void* src, std::size_t bytes) {
+  if (d == Device::Cuda) cuda::copy(dst, src, bytes, 1);
+  else std::memcpy(dst, src, bytes);
+}
+void copyDeviceToDevice(Device d, void* dst, const void* src, std::size_t bytes) {
+  if (d == Device::Cuda) cuda::copy(dst, src, bytes, 2);
+  else std::memmove(dst, src, bytes);
+}
+void fillBytes(Device d, void* dst, int value, std::size_t bytes) {
+  if (d == Device::Cuda) cuda::fill(dst, value, bytes);
+  else std::memset(dst, value, bytes);
+}
+void checkLastLaunch(Device d, const char* what) {
+  if (d == Device::Cuda) cuda::checkLaunch(what);
+}
+
+}  // namespace soak

@@ -1,0 +1,40 @@
+#pragma once
+#include <cstddef>
+#include <string>
+
+namespace soak {
+
+// Where physics runs. Chosen at run time (--device auto|cpu|cuda).
+enum class Device { Cpu, Cuda };
+
+const char* deviceName(Device d);
+
+// True when this build has the CUDA backend compiled in.
+bool cudaBackendBuilt();
+// True when the CUDA backend is built and a usable GPU is present. When it is
+// not, `why` (if given) says why in one line.
+bool cudaDeviceAvailable(std::string* why = nullptr);
+// Human-readable name of the GPU (empty without one).
+std::string cudaDeviceDescription();
+
+// "auto" -> Cuda if available else Cpu; "cpu"; "cuda" (DeviceError if unavailable).
+Device resolveDevice(const std::string& request);
+
+// Waits for all queued device work (no-op on CPU).
+void synchronize(Device d);
+
+// Raw memory on a device. Errors throw DeviceError.
+void* deviceAllocate(Device d, std::size_t bytes);
+void deviceFree(Device d, void* p) noexcept;
+void copyHostToDevice(Device d, void* dst, const void* src, std::size_t bytes);
+void copyDeviceToHost(Device d, void* dst, const void* src, std::size_t bytes);
+void copyDeviceToDevice(Device d, void* dst, const void* src, std::size_t bytes);
+void fillBytes(Device d, void* dst, int value, std::size_t bytes);
+
+// Bytes of device memory currently allocated through deviceAllocate (per device).
+std::size_t deviceBytesInUse(Device d);
+
+// Throws DeviceError naming `what` if the last kernel launch failed (CUDA only).
+void checkLastLaunch(Device d, const char* what);
+
+}  // namespace soak

@@ -1,0 +1,89 @@
+#pragma once
+// The neighbourhood grid as solver functions see it.
+//
+// Space is cut into cubic cells of edge `cellSize` (the largest support
+// radius). A cell is identified by its integer coordinates wrapped modulo
+// 1024 per axis and packed into 30 bits (the cell key). Cells are hashed into
+// 2^bucketBits buckets by the low bits of the key's Morton code, which keeps
+// neighbouring cells in nearby buckets (locality) and uses memory in
+// proportion to the particle count, never to the extent of the domain.
+// Particles are sorted by bucket; bucket b holds slots [start[b], end[b]).
+// A bucket may hold several cells (hash collisions), so a candidate is
+// accepted only if its own cell key equals the visited cell's key: each
+// particle is then visited at most once per query, because the 27 cells
+// around any cell have 27 distinct keys.
+#include <cmath>
+#include <cstdint>
+
+#include "Base/HostDevice.h"
+#include "Base/Vec3.h"
+
+namespace soak {
+
+struct GridView {
+  float invCellSize = 1.f;
+  std::uint32_t bucketMask = 0;
+  const std::uint32_t* start = nullptr;    // per bucket
+  const std::uint32_t* end = nullptr;      // per bucket (0 for an empty bucket)
+  const std::uint32_t* cellKey = nullptr;  // per particle slot
+};
+
+constexpr std::uint32_t kCellWrap = 1024u;
+
+SOAK_INLINE int cellCoordinate(float x, float invCellSize) {
+  float c = floorf(x * invCellSize);
+  // Clamp before converting so far-away points stay defined behaviour.
+  c = fminf(fmaxf(c, -1.0e9f), 1.0e9f);
+  return static_cast<int>(c);
+}
+
+SOAK_INLINE std::uint32_t packCellKey(int ix, int iy, int iz) {
+  return (static_cast<std::uint32_t>(ix) & 1023u) | ((static_cast<std::uint32_t>(iy) & 1023u) << 10) |
+         ((static_cast<std::uint32_t>(iz) & 1023u) << 20);
+}
+
+SOAK_INLINE std::uint32_t cellKeyOf(Vec3 p, float invCellSize) {
+  return packCellKey(cellCoordinate(p.x, invCellSize), cellCoordinate(p.y, invCellSize),
+                     cellCoordinate(p.z, invCellSize));
+}
+
+// Spreads the low 10 bits of v to every third bit.
+SOAK_INLINE std::uint32_t spreadBits3(std::uint32_t v) {
+  v &= 0x3ffu;
+  v = (v | (v << 16)) & 0x030000ffu;
+  v = (v | (v << 8)) & 0x0300f00fu;
+  v = (v | (v << 4)) & 0x030c30c3u;
+  v = (v | (v << 2)) & 0x09249249u;
+  return v;
+}
+
+SOAK_INLINE std::uint32_t bucketOfKey(std::uint32_t key, std::uint32_t bucketMask) {
+  std::uint32_t morton = spreadBits3(key) | (spreadBits3(key >> 10) << 1) | (spreadBits3(key >> 20) << 2);
+  return morton & bucketMask;
+}
+
+// Calls f(j) once for every slot j whose cell is one of the 27 cells around
+// the cell with key `centerKey`. The caller applies its own distance test.
+template <class F>
+SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, F&& f) {
+  const std::uint32_t cx = centerKey & 1023u, cy = (centerKey >> 10) & 1023u, cz = (centerKey >> 20) & 1023u;
+  for (int dz = -1; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::uint32_t key = ((cx + dx) & 1023u) | (((cy + dy) & 1023u) << 10) | (((cz + dz) & 1023u) << 20);
+        const std::uint32_t b = bucketOfKey(key, g.bucketMask);
+        const std::uint32_t e = g.end[b];
+        for (std::uint32_t j = g.start[b]; j < e; ++j)
+          if (g.cellKey[j] == key) f(static_cast<int>(j));
+      }
+    }
+  }
+}
+
+// Same, around an arbitrary point.
+template <class F>
+SOAK_INLINE void forEachCandidateNear(const GridView& g, Vec3 p, F&& f) {
+  forEachCandidate(g, cellKeyOf(p, g.invCellSize), static_cast<F&&>(f));
+}
+
+}  // namespace soak

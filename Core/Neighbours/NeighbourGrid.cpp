@@ -1,0 +1,125 @@
+#include "Neighbours/NeighbourGrid.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "Backend/ForEach.h"
+#include "Backend/Primitives.h"
+#include "Base/Error.h"
+
+namespace soak {
+
+NeighbourGrid::NeighbourGrid(Device device)
+    : device_(device), start_(device), end_(device), cellKey_(device), bucket_(device), order_(device) {}
+
+namespace {
+// Smallest b with 2^b >= n (at least 1, at most 30: 3 x 10 key bits).
+int bucketBitsFor(int n) {
+  int b = 1;
+  while (b < 30 && (1 << b) < n) ++b;
+  return b;
+}
+}  // namespace
+
+void NeighbourGrid::build(ParticleState& particles, float cellSize) {
+  if (!(cellSize > 0.f) || !std::isfinite(cellSize))
+    throw InputError("neighbour search: cell size must be positive and finite");
+  const int n = particles.count();
+  cellSize_ = cellSize;
+  bucketBits_ = bucketBitsFor(n);
+  const std::uint32_t buckets = 1u << bucketBits_;
+  const std::uint32_t mask = buckets - 1u;
+  const float inv = 1.f / cellSize;
+
+  start_.resize(buckets);
+  end_.resize(buckets);
+  cellKey_.resize(n);
+  bucket_.resize(n);
+  order_.resize(n);
+  end_.fillZero();
+  if (n == 0) return;
+
+  ParticleView p = particles.view();
+  std::uint32_t* key = cellKey_.data();
+  std::uint32_t* bucket = bucket_.data();
+  std::uint32_t* order = order_.data();
+  forEach(device_, n, SOAK_LAMBDA(int i) {
+    Float4 x = p.predicted[i];
+    key[i] = cellKeyOf(x.xyz(), inv);
+    bucket[i] = bucketOfKey(key[i], mask);
+    order[i] = static_cast<std::uint32_t>(i);
+  }, "grid.keys");
+
+  if (device_ == Device::Cuda) sortCuda(n);
+  else sortCpu(n);
+
+  // Reorder the particle data itself (not only an index): neighbour loops
+  // then read memory that is close together.
+  particles.gather(order);
+  // Keys follow the same order.
+  Buffer<std::uint32_t> sortedKeys(device_, n);
+  std::uint32_t* sk = sortedKeys.data();
+  const std::uint32_t* ck = key;
+  forEach(device_, n, SOAK_LAMBDA(int i) { sk[i] = ck[order[i]]; }, "grid.sortKeys");
+  cellKey_.swap(sortedKeys);
+
+  std::uint32_t* start = start_.data();
+  std::uint32_t* end = end_.data();
+  const std::uint32_t* sb = bucket;
+  forEach(device_, n, SOAK_LAMBDA(int i) {
+    std::uint32_t b = sb[i];
+    if (i == 0 || sb[i - 1] != b) start[b] = static_cast<std::uint32_t>(i);
+    if (i == n - 1 || sb[i + 1] != b) end[b] = static_cast<std::uint32_t>(i + 1);
+  }, "grid.ranges");
+}
+
+// Stable counting sort of slots by bucket (host memory).
+void NeighbourGrid::sortCpu(int n) {
+  const std::uint32_t buckets = 1u << bucketBits_;
+  std::vector<std::uint32_t> offset(buckets + 1, 0);
+  std::uint32_t* bucket = bucket_.data();
+  for (int i = 0; i < n; ++i) ++offset[bucket[i] + 1];
+  for (std::uint32_t b = 0; b < buckets; ++b) offset[b + 1] += offset[b];
+  std::vector<std::uint32_t> sortedBucket(n);
+  std::uint32_t* order = order_.data();
+  for (int i = 0; i < n; ++i) {
+    std::uint32_t dst = offset[bucket[i]]++;
+    order[dst] = static_cast<std::uint32_t>(i);
+    sortedBucket[dst] = bucket[i];
+  }
+  std::copy(sortedBucket.begin(), sortedBucket.end(), bucket);
+}
+
+// Stable radix sort of (bucket, slot) pairs on the GPU.
+void NeighbourGrid::sortCuda(int n) { sortPairs(device_, bucket_.data(), order_.data(), n, bucketBits_); }
+
+GridView NeighbourGrid::view() const {
+  GridView g;
+  g.invCellSize = 1.f / cellSize_;
+  g.bucketMask = (1u << bucketBits_) - 1u;
+  g.start = start_.data();
+  g.end = end_.data();
+  g.cellKey = cellKey_.data();
+  return g;
+}
+
+std::size_t NeighbourGrid::bytes() const {
+  return (start_.capacity() + end_.capacity() + cellKey_.capacity() + bucket_.capacity() + order_.capacity()) *
+         sizeof(std::uint32_t);
+}
+
+void countNeighbours(Device device, const GridView& grid, ParticleView p, int* count) {
+  forEach(device, p.count, SOAK_LAMBDA(int i) {
+    const Vec3 xi = p.predicted[i].xyz();
+    const float hi = p.radius[i];
+    int c = 0;
+    forEachCandidate(grid, grid.cellKey[i], [&](int j) {
+      if (j == i) return;
+      const float r = fmaxf(hi, p.radius[j]);
+      if (lengthSquared(xi - p.predicted[j].xyz()) < r * r) ++c;
+    });
+    count[i] = c;
+  }, "countNeighbours");
+}
+
+}  // namespace soak

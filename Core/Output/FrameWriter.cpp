@@ -1,0 +1,95 @@
+#include "Output/FrameWriter.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iomanip>
+
+#include "Base/Error.h"
+#include "Output/VtkFiles.h"
+#include "Simulation/Simulation.h"
+
+namespace soak {
+
+void makeDirectories(const std::string& path) {
+  std::string cur;
+  for (std::size_t i = 0; i <= path.size(); ++i) {
+    if (i == path.size() || path[i] == '/') {
+      if (!cur.empty() && cur != "/" && ::mkdir(cur.c_str(), 0755) != 0 && errno != EEXIST)
+        throw InputError("cannot create output folder '" + cur + "': " + std::strerror(errno));
+    }
+    if (i < path.size()) cur += path[i];
+  }
+  if (::access(path.c_str(), W_OK) != 0)
+    throw InputError("output folder '" + path + "' is not writable: " + std::strerror(errno));
+}
+
+FrameWriter::FrameWriter(const std::string& directory, const std::string& sceneText)
+    : dir_(directory), water_(directory + "/water.pvd") {
+  makeDirectories(dir_ + "/water");
+  writeFileAtomically(dir_ + "/scene.xml", sceneText);
+  stats_.open(dir_ + "/stats.csv", std::ios::out | std::ios::trunc);
+  if (!stats_) throw InputError("cannot write '" + dir_ + "/stats.csv'");
+}
+
+namespace {
+std::string frameName(const std::string& prefix, int frame, const char* ext) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%s_%06d.%s", prefix.c_str(), frame, ext);
+  return buf;
+}
+}  // namespace
+
+void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
+  ParticleState& ps = sim.particles;
+  std::vector<Float4> pos = ps.downloadPositions();
+  std::vector<Vec3> vel = ps.downloadVelocities();
+  std::vector<float> mass = ps.downloadMasses(), radius = ps.downloadRadii();
+  std::vector<int> phase = ps.downloadPhases(), id = ps.downloadIds();
+
+  // Water: sorted by id so frames list particles in a stable order.
+  std::vector<std::size_t> water;
+  for (std::size_t i = 0; i < phase.size(); ++i)
+    if (isWater(phase[i])) water.push_back(i);
+  std::sort(water.begin(), water.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
+  std::vector<Vec3> points(water.size());
+  PointArray v{"velocity", 3, {}}, m{"mass", 1, {}}, r{"radius", 1, {}}, ids{"id", 1, {}};
+  for (std::size_t k = 0; k < water.size(); ++k) {
+    std::size_t i = water[k];
+    points[k] = pos[i].xyz();
+    v.values.insert(v.values.end(), {vel[i].x, vel[i].y, vel[i].z});
+    m.values.push_back(mass[i]);
+    r.values.push_back(radius[i]);
+    ids.values.push_back(static_cast<float>(id[i]));
+  }
+  const std::string file = frameName("water", frame, "vtu");
+  writeParticlesVtu(dir_ + "/water/" + file, points, {v, m, r, ids});
+  water_.add(sim.time(), "water/" + file);
+
+  StatsRow row;
+  row.add("frame", frame);
+  row.add("time", sim.time());
+  row.add("step", double(sim.stepIndex()));
+  const StatsRow simStats = sim.collectStats();
+  for (const auto& c : simStats.values()) row.add(c.first, c.second);
+  row.add("step_ms", stepMs);
+  writeStatsRow(row);
+  ++frames_;
+}
+
+void FrameWriter::writeStatsRow(const StatsRow& row) {
+  if (statsColumns_.empty()) {
+    for (const auto& c : row.values()) statsColumns_.push_back(c.first);
+    for (std::size_t i = 0; i < statsColumns_.size(); ++i) stats_ << (i ? "," : "") << statsColumns_[i];
+    stats_ << "\n";
+  }
+  for (std::size_t i = 0; i < row.values().size(); ++i)
+    stats_ << (i ? "," : "") << std::setprecision(10) << row.values()[i].second;
+  stats_ << "\n";
+  stats_.flush();
+}
+
+}  // namespace soak

@@ -1,0 +1,38 @@
+#pragma once
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Output/PvdCollection.h"
+#include "Registry/Module.h"
+
+namespace soak {
+
+class Simulation;
+
+// Writes a run's folder:
+//   OUT/water.pvd + OUT/water/water_NNNNNN.vtu   water particles
+//   OUT/stats.csv                                 one row per frame
+//   OUT/scene.xml                                 the scene as run
+class FrameWriter {
+ public:
+  // Creates the folder (and fails with InputError if it cannot be written).
+  FrameWriter(const std::string& directory, const std::string& sceneText);
+  void writeFrame(Simulation& sim, int frame, double stepMs);
+  const std::string& directory() const { return dir_; }
+  int framesWritten() const { return frames_; }
+
+ private:
+  void writeStatsRow(const StatsRow& row);
+  std::string dir_;
+  PvdCollection water_;
+  std::ofstream stats_;
+  std::vector<std::string> statsColumns_;
+  int frames_ = 0;
+};
+
+// Creates a directory and its parents; throws InputError if impossible.
+void makeDirectories(const std::string& path);
+
+}  // namespace soak

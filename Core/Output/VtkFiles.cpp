@@ -1,0 +1,116 @@
+#include "Output/VtkFiles.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+#include <vtkZLibDataCompressor.h>
+
+#include <cstdio>
+
+#include "Base/Error.h"
+
+namespace soak {
+
+namespace {
+vtkNew<vtkPoints> makePoints(const std::vector<Vec3>& points) {
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToFloat();
+  pts->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    pts->SetPoint(static_cast<vtkIdType>(i), points[i].x, points[i].y, points[i].z);
+  return pts;
+}
+
+void addPointData(vtkPointData* pd, const std::vector<PointArray>& data, std::size_t n) {
+  for (const PointArray& a : data) {
+    if (a.values.size() != n * static_cast<std::size_t>(a.components))
+      throw std::logic_error("point array '" + a.name + "' has the wrong size");
+    vtkNew<vtkFloatArray> arr;
+    arr->SetName(a.name.c_str());
+    arr->SetNumberOfComponents(a.components);
+    arr->SetNumberOfTuples(static_cast<vtkIdType>(n));
+    std::copy(a.values.begin(), a.values.end(), arr->GetPointer(0));
+    pd->AddArray(arr);
+  }
+}
+
+template <class Writer>
+void configureAndWrite(Writer* w, const std::string& path) {
+  std::string tmp = path + ".tmp";
+  w->SetFileName(tmp.c_str());
+  w->SetDataModeToAppended();
+  w->EncodeAppendedDataOff();  // raw binary appended
+  vtkNew<vtkZLibDataCompressor> z;
+  w->SetCompressor(z);
+  if (!w->Write()) throw std::runtime_error("cannot write '" + path + "'");
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename '" + tmp + "'");
+}
+}  // namespace
+
+void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points, const std::vector<PointArray>& data) {
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(makePoints(points));
+  const vtkIdType n = static_cast<vtkIdType>(points.size());
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkIdTypeArray> offsets, conn;
+  offsets->SetNumberOfValues(n + 1);
+  conn->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    offsets->SetValue(i, i);
+    conn->SetValue(i, i);
+  }
+  offsets->SetValue(n, n);
+  cells->SetData(offsets, conn);
+  grid->SetCells(VTK_VERTEX, cells);
+  addPointData(grid->GetPointData(), data, points.size());
+  vtkNew<vtkXMLUnstructuredGridWriter> w;
+  w->SetInputData(grid);
+  configureAndWrite(w.GetPointer(), path);
+}
+
+void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
+                  const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data) {
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(makePoints(points));
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : triangles) {
+    vtkIdType ids[3] = {t[0], t[1], t[2]};
+    polys->InsertNextCell(3, ids);
+  }
+  poly->SetPolys(polys);
+  addPointData(poly->GetPointData(), data, points.size());
+  vtkNew<vtkXMLPolyDataWriter> w;
+  w->SetInputData(poly);
+  configureAndWrite(w.GetPointer(), path);
+}
+
+void writeFileAtomically(const std::string& path, const std::string& content) {
+  std::string tmp = path + ".tmp";
+  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write '" + tmp + "'");
+  const char* p = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    ssize_t k = ::write(fd, p, left);
+    if (k <= 0) {
+      ::close(fd);
+      throw std::runtime_error("cannot write '" + tmp + "'");
+    }
+    p += k;
+    left -= static_cast<std::size_t>(k);
+  }
+  ::fsync(fd);
+  ::close(fd);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename '" + tmp + "'");
+}
+
+}  // namespace soak

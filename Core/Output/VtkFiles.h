@@ -1,0 +1,28 @@
+#pragma once
+// VTK XML files (binary appended, zlib-compressed) through the VTK library.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "Base/Vec3.h"
+
+namespace soak {
+
+struct PointArray {
+  std::string name;
+  int components = 1;
+  std::vector<float> values;  // size = points * components
+};
+
+// Particles as an unstructured grid of vertex cells (ParaView can glyph them).
+void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points, const std::vector<PointArray>& data);
+
+// A triangle mesh as poly data.
+void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
+                  const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data);
+
+// Writes `content` to `path` atomically (temporary file, fsync, rename), so a
+// reader never sees a half-written file.
+void writeFileAtomically(const std::string& path, const std::string& content);
+
+}  // namespace soak

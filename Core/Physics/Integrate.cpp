@@ -1,0 +1,46 @@
+#include "Physics/Integrate.h"
+
+#include "Backend/ForEach.h"
+
+namespace soak {
+
+void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Vec3* accel) {
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    Float4 x = p.position[i];
+    if (x.w == 0.f) {
+      p.predicted[i] = x;
+      return;
+    }
+    Vec3 a = gravity;
+    if (accel) a += accel[i];
+    Vec3 v = p.velocity[i] + a * dt;
+    p.velocity[i] = v;
+    p.predicted[i] = Float4(x.xyz() + v * dt, x.w);
+  }, "predict");
+}
+
+void projectColliders(Device d, ParticleView p, const Collider* colliders, int colliderCount, float radiusScale,
+                      float dt) {
+  if (colliderCount == 0) return;
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    Float4 xp = p.predicted[i];
+    if (xp.w == 0.f) return;
+    const Vec3 x = p.position[i].xyz();
+    const float r = radiusScale * p.radius[i];
+    Vec3 q = xp.xyz();
+    for (int c = 0; c < colliderCount; ++c) q = projectOutOfCollider(colliders[c], x, q, r, dt);
+    p.predicted[i] = Float4(q, xp.w);
+  }, "colliders");
+}
+
+void updateVelocities(Device d, ParticleView p, float dt) {
+  const float inv = 1.f / dt;
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    Float4 x = p.position[i];
+    Float4 xp = p.predicted[i];
+    p.velocity[i] = x.w == 0.f ? Vec3(0.f, 0.f, 0.f) : (xp.xyz() - x.xyz()) * inv;
+    p.position[i] = xp;
+  }, "finalize");
+}
+
+}  // namespace soak

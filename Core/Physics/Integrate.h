@@ -1,0 +1,22 @@
+#pragma once
+// The explicit parts of the step (Algorithm 1, lines 2-3 and the velocity
+// update of PBD): stateless functions over particle arrays.
+#include "Backend/Device.h"
+#include "Physics/Collider.h"
+#include "Particles/ParticleState.h"
+
+namespace soak {
+
+// v += dt * g ; x* = x + dt * v  (particles with inverse mass 0 stay put).
+// `accel`, if given, is an extra per-particle acceleration added to gravity.
+void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Vec3* accel = nullptr);
+
+// Projects predicted positions out of every collider; collision radius of a
+// particle is `radiusScale` times its support radius.
+void projectColliders(Device d, ParticleView p, const Collider* colliders, int colliderCount, float radiusScale,
+                      float dt);
+
+// v = (x* - x) / dt ; x = x*.
+void updateVelocities(Device d, ParticleView p, float dt);
+
+}  // namespace soak

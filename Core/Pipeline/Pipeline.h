@@ -1,0 +1,52 @@
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "Backend/Device.h"
+
+namespace soak {
+
+class Simulation;
+
+// A named piece of a step.
+struct Stage {
+  std::string name;
+  std::function<void(Simulation&)> run;
+};
+
+// Per-stage timing, accumulated over the steps run so far.
+struct StageTiming {
+  std::string name;
+  double totalMs = 0.0;
+  long long calls = 0;
+  double meanMs() const { return calls ? totalMs / double(calls) : 0.0; }
+};
+
+// The step: an ordered list of named, timed stages. Core adds the dry
+// stages (predict, neighbours, ..., finalize); modules insert theirs
+// relative to a named anchor (any existing stage name).
+class Pipeline {
+ public:
+  void append(Stage stage);
+  // Throws std::invalid_argument naming the valid anchors if `anchor` is absent.
+  void insertBefore(const std::string& anchor, Stage stage);
+  void insertAfter(const std::string& anchor, Stage stage);
+  bool has(const std::string& name) const;
+  std::vector<std::string> names() const;
+
+  // Runs every stage once. With `profile`, device work is waited for after
+  // each stage so its time is its own (slower, but honest on the GPU).
+  void run(Simulation& sim, Device device, bool profile);
+
+  const std::vector<StageTiming>& timings() const { return timings_; }
+  void resetTimings();
+
+ private:
+  std::size_t indexOf(const std::string& anchor) const;
+  void insertAt(std::size_t index, Stage stage);
+  std::vector<Stage> stages_;
+  std::vector<StageTiming> timings_;
+};
+
+}  // namespace soak

@@ -1,0 +1,40 @@
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace soak {
+
+class Simulation;
+class Pipeline;
+
+// One row of stats.csv, filled column by column (order is kept).
+class StatsRow {
+ public:
+  void add(const std::string& column, double value) { values_.emplace_back(column, value); }
+  const std::vector<std::pair<std::string, double>>& values() const { return values_; }
+  double get(const std::string& column) const;
+
+ private:
+  std::vector<std::pair<std::string, double>> values_;
+};
+
+// What a scene element becomes. A module may change settings, create
+// particles and meshes, add stages to the step, and add stats columns.
+// Every hook is optional.
+class Module {
+ public:
+  virtual ~Module() = default;
+  // First pass over all modules, in scene order: settings only.
+  virtual void configure(Simulation&) {}
+  // Second pass: create particles, cloth, colliders.
+  virtual void setup(Simulation&) {}
+  // Third pass: add stages relative to the named anchors of the step.
+  virtual void addStages(Pipeline&, Simulation&) {}
+  // Called once per output frame.
+  virtual void addStats(Simulation&, StatsRow&) {}
+  // Called before every step (host side, e.g. to move a scripted collider).
+  virtual void beforeStep(Simulation&) {}
+};
+
+}  // namespace soak

@@ -1,0 +1,48 @@
+#include "Simulation/Runner.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "Output/FrameWriter.h"
+#include "Simulation/Simulation.h"
+
+namespace soak {
+
+int Runner::plannedFrames(const RunOptions& o) const {
+  if (o.frames >= 0) return o.frames;
+  double t = o.time >= 0.0 ? o.time : sim_.settings.duration;
+  return static_cast<int>(std::floor(t * sim_.settings.frameRate + 1e-9));
+}
+
+RunProgress Runner::run(const RunOptions& o, const std::function<void(const RunProgress&)>& onFrame) {
+  using Clock = std::chrono::steady_clock;
+  RunProgress p;
+  p.frames = plannedFrames(o);
+  p.endTime = p.frames / sim_.settings.frameRate;
+  const auto start = Clock::now();
+  if (writer_) writer_->writeFrame(sim_, 0, 0.0);
+  if (onFrame) onFrame(p);
+  const long long firstStep = sim_.stepIndex();
+  for (int f = 1; f <= p.frames && !stop_; ++f) {
+    const double target = f / sim_.settings.frameRate;
+    const auto t0 = Clock::now();
+    int steps = 0;
+    while (sim_.time() < target - 1e-6 * sim_.settings.timeStep) {
+      sim_.step(o.profile);
+      ++steps;
+    }
+    synchronize(sim_.device());
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    if (writer_) writer_->writeFrame(sim_, f, steps ? ms / steps : 0.0);
+    p.frame = f;
+    p.simTime = sim_.time();
+    p.steps = sim_.stepIndex() - firstStep;
+    p.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    p.stepsPerSecond = p.wallSeconds > 0 ? double(p.steps) / p.wallSeconds : 0.0;
+    p.etaSeconds = p.frame > 0 ? p.wallSeconds / p.frame * (p.frames - p.frame) : 0.0;
+    if (onFrame) onFrame(p);
+  }
+  return p;
+}
+
+}  // namespace soak

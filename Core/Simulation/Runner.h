@@ -1,0 +1,43 @@
+#pragma once
+#include <functional>
+
+namespace soak {
+
+class Simulation;
+class FrameWriter;
+
+struct RunOptions {
+  int frames = -1;     // output frames after frame 0; -1: from duration
+  double time = -1.0;  // simulated seconds; -1: from the scene
+  bool profile = false;
+};
+
+struct RunProgress {
+  int frame = 0, frames = 0;
+  double simTime = 0.0, endTime = 0.0;
+  long long steps = 0;
+  double stepsPerSecond = 0.0;
+  double etaSeconds = 0.0;
+  double wallSeconds = 0.0;
+};
+
+// Steps a simulation frame by frame, writing each frame (frame 0 is the
+// initial state). Frames are at multiples of 1/frameRate, independent of
+// the time step: a frame is written at the first step at or past its time.
+class Runner {
+ public:
+  Runner(Simulation& sim, FrameWriter* writer) : sim_(sim), writer_(writer) {}
+  // Returns the final progress. `onFrame` is called after every frame.
+  RunProgress run(const RunOptions& options, const std::function<void(const RunProgress&)>& onFrame = {});
+  // Stop after the current frame (e.g. from a signal handler flag).
+  void requestStop() { stop_ = true; }
+  // Number of frames the options and scene ask for (after frame 0).
+  int plannedFrames(const RunOptions& options) const;
+
+ private:
+  Simulation& sim_;
+  FrameWriter* writer_;
+  volatile bool stop_ = false;
+};
+
+}  // namespace soak

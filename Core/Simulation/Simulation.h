@@ -1,0 +1,72 @@
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Backend/Buffer.h"
+#include "Neighbours/NeighbourGrid.h"
+#include "Particles/ParticleState.h"
+#include "Physics/Collider.h"
+#include "Pipeline/Pipeline.h"
+#include "Registry/Module.h"
+#include "Simulation/Settings.h"
+
+namespace soak {
+
+// Everything one run holds: settings, particles, the neighbour grid,
+// colliders, the modules made from the scene, and the step pipeline.
+class Simulation {
+ public:
+  explicit Simulation(Device device);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  Device device() const { return device_; }
+
+  // Takes ownership of the modules made from the scene.
+  void addModule(std::unique_ptr<Module> module);
+  // configure, setup, then build the pipeline (core stages + module stages).
+  void initialize();
+  // One time step.
+  void step(bool profile = false);
+
+  // Counts and water budget for stats.csv (one reduction per call).
+  StatsRow collectStats();
+
+  SimulationSettings settings;
+  WaterSettings water;
+  ParticleState particles;
+  NeighbourGrid grid;
+  std::vector<Collider> colliders;  // host copy; uploaded when changed
+  Pipeline pipeline;
+
+  long long stepIndex() const { return stepIndex_; }
+  double time() const { return time_; }
+  // Largest support radius of any particle (cell size of the grid). Modules
+  // that add particles with a larger radius must raise it.
+  float maxSupportRadius() const { return maxSupportRadius_; }
+  void raiseSupportRadius(float r) {
+    if (r > maxSupportRadius_) maxSupportRadius_ = r;
+  }
+  // Marks the collider list changed so it is uploaded before the next step.
+  void collidersChanged() { collidersDirty_ = true; }
+  const Collider* deviceColliders() const { return colliderBuffer_.data(); }
+
+  // Water mass removed by sinks or by leaving the domain (kg).
+  double drainedWaterMass = 0.0;
+  // Serial numbers for new water particles (the `id` array).
+  int nextWaterId = 0;
+
+ private:
+  void addCoreStages();
+  Device device_;
+  std::vector<std::unique_ptr<Module>> modules_;
+  Buffer<Collider> colliderBuffer_;
+  bool collidersDirty_ = true;
+  long long stepIndex_ = 0;
+  double time_ = 0.0;
+  float maxSupportRadius_ = 0.f;
+};
+
+}  // namespace soak

@@ -1,0 +1,75 @@
+#include "Arguments.h"
+
+#include <cstdlib>
+
+#include "Base/Error.h"
+
+namespace soak::cli {
+
+const char* kUsage =
+    "usage: soak <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  run SCENE.xml [options]   simulate a scene and write ParaView files\n"
+    "  params                    print every scene element and parameter (Markdown)\n"
+    "  version                   print the version and the backends built\n"
+    "  help                      this text\n"
+    "\n"
+    "run options:\n"
+    "  -o, --output DIR          output folder (default: soak-out/<scene name>)\n"
+    "  --device auto|cpu|cuda    where to simulate (default: auto = GPU when present)\n"
+    "  --frames N                number of output frames after frame 0\n"
+    "  --time T                  simulated seconds (instead of the scene's duration)\n"
+    "  --set Element.attr=value  override a scene value (Element[i].attr for repeated elements)\n"
+    "  --plugin PATH             load a plugin library (repeatable)\n"
+    "  --threads N               CPU threads (default: all cores)\n"
+    "  --profile                 print mean milliseconds per stage at the end\n"
+    "  --quiet                   no progress output\n"
+    "\n"
+    "exit codes: 0 success, 1 internal error, 2 bad input (nothing written),\n"
+    "            3 device unavailable or failed, 4 simulation unstable, 130 interrupted\n";
+
+namespace {
+double toNumber(const std::string& opt, const std::string& v) {
+  char* end = nullptr;
+  double d = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end) throw InputError(opt + ": '" + v + "' is not a number");
+  return d;
+}
+}  // namespace
+
+RunArguments parseRunArguments(const std::vector<std::string>& args) {
+  RunArguments r;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw InputError(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "-o" || a == "--output") r.output = value();
+    else if (a == "--device") r.device = value();
+    else if (a == "--frames") {
+      double f = toNumber(a, value());
+      if (f < 0 || f != static_cast<int>(f)) throw InputError("--frames must be a non-negative integer");
+      r.frames = static_cast<int>(f);
+    } else if (a == "--time") {
+      r.time = toNumber(a, value());
+      if (!(r.time >= 0)) throw InputError("--time must be >= 0");
+    } else if (a == "--set") r.overrides.push_back(value());
+    else if (a == "--plugin") r.plugins.push_back(value());
+    else if (a == "--threads") {
+      double t = toNumber(a, value());
+      if (t < 1 || t != static_cast<int>(t)) throw InputError("--threads must be a positive integer");
+      r.threads = static_cast<int>(t);
+    } else if (a == "--profile") r.profile = true;
+    else if (a == "--quiet" || a == "-q") r.quiet = true;
+    else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see soak help)");
+    else if (r.scene.empty()) r.scene = a;
+    else throw InputError("unexpected argument '" + a + "' (one scene per run)");
+  }
+  if (r.scene.empty()) throw InputError("soak run: no scene file given (usage: soak run SCENE.xml [options])");
+  if (r.frames >= 0 && r.time >= 0) throw InputError("give --frames or --time, not both");
+  return r;
+}
+
+}  // namespace soak::cli

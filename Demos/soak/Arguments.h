@@ -1,0 +1,35 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace soak::cli {
+
+// Exit codes of the soak program (documented in README and Doc/cli.md).
+enum ExitCode {
+  kExitOk = 0,
+  kExitInternal = 1,    // a bug or an unexpected failure
+  kExitInput = 2,       // bad scene, mesh, option or output folder; nothing written
+  kExitDevice = 3,      // the device asked for is unavailable or failed
+  kExitUnstable = 4,    // the simulation went unstable (NaN, runaway speed)
+  kExitInterrupted = 130,
+};
+
+struct RunArguments {
+  std::string scene;
+  std::string output;      // empty: soak-out/<scene stem>
+  std::string device = "auto";
+  int frames = -1;
+  double time = -1.0;
+  std::vector<std::string> overrides;
+  std::vector<std::string> plugins;
+  bool profile = false;
+  bool quiet = false;
+  int threads = 0;
+};
+
+// Parses the arguments after "run". Throws InputError with usage help.
+RunArguments parseRunArguments(const std::vector<std::string>& args);
+
+extern const char* kUsage;
+
+}  // namespace soak::cli

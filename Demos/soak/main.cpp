@@ -1,0 +1,36 @@
+// soak: the command-line program. See `soak help`.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "Arguments.h"
+#include "Base/Error.h"
+#include "RunCommand.h"
+
+int main(int argc, char** argv) {
+  using namespace soak::cli;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    std::fputs(kUsage, args.empty() ? stderr : stdout);
+    return args.empty() ? kExitInput : kExitOk;
+  }
+  const std::string cmd = args[0];
+  std::vector<std::string> rest(args.begin() + 1, args.end());
+  try {
+    if (cmd == "run") return runCommand(parseRunArguments(rest));
+    if (cmd == "params") return paramsCommand(rest);
+    if (cmd == "version" || cmd == "--version") return versionCommand();
+    std::fprintf(stderr, "soak: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);
+    return kExitInput;
+  } catch (const soak::InputError& e) {
+    std::fprintf(stderr, "soak: error: %s\n", e.what());
+    return kExitInput;
+  } catch (const soak::DeviceError& e) {
+    std::fprintf(stderr, "soak: device error: %s\n", e.what());
+    return kExitDevice;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "soak: internal error: %s\n", e.what());
+    return kExitInternal;
+  }
+}

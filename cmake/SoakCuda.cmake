@@ -1,0 +1,55 @@
+# SOAK_CUDA=AUTO|ON|OFF decides whether the CUDA backend is compiled.
+#   AUTO (default): built when a CUDA compiler is found, otherwise a CPU-only build.
+#   ON: the CUDA toolkit is required.   OFF: CPU-only build.
+# Architectures: CMAKE_CUDA_ARCHITECTURES, default "90" (Hopper: H100/H200).
+# Other documented values: "80" (A100), "86;89" (Ampere/Ada consumer cards),
+# or a list such as "80;90" (each added architecture adds compile time).
+set(SOAK_CUDA "AUTO" CACHE STRING "Build the CUDA backend: AUTO, ON or OFF")
+set_property(CACHE SOAK_CUDA PROPERTY STRINGS AUTO ON OFF)
+
+set(SOAK_WITH_CUDA OFF)
+if(NOT SOAK_CUDA STREQUAL "OFF")
+  if(NOT DEFINED CMAKE_CUDA_COMPILER AND EXISTS /usr/local/cuda/bin/nvcc)
+    set(CMAKE_CUDA_COMPILER /usr/local/cuda/bin/nvcc)
+  endif()
+  include(CheckLanguage)
+  check_language(CUDA)
+  if(CMAKE_CUDA_COMPILER)
+    if(NOT DEFINED CMAKE_CUDA_ARCHITECTURES)
+      set(CMAKE_CUDA_ARCHITECTURES 90)
+    endif()
+    enable_language(CUDA)
+    set(CMAKE_CUDA_STANDARD 17)
+    set(CMAKE_CUDA_STANDARD_REQUIRED ON)
+    set(CMAKE_CUDA_RUNTIME_LIBRARY Shared)
+    find_package(CUDAToolkit REQUIRED)
+    set(SOAK_WITH_CUDA ON)
+  elseif(SOAK_CUDA STREQUAL "ON")
+    message(FATAL_ERROR "SOAK_CUDA=ON but no CUDA compiler was found (set CMAKE_CUDA_COMPILER or install the CUDA toolkit)")
+  endif()
+endif()
+
+if(SOAK_WITH_CUDA)
+  message(STATUS "Soak: CUDA backend ON (architectures: ${CMAKE_CUDA_ARCHITECTURES}, nvcc ${CMAKE_CUDA_COMPILER_VERSION})")
+else()
+  message(STATUS "Soak: CPU-ONLY build (no CUDA backend; --device cuda will be refused)")
+endif()
+
+# soak_physics_sources(<target> <files...>): files written once for both
+# backends. With CUDA they are compiled by nvcc (so forEach launches kernels),
+# otherwise by the C++ compiler (forEach runs OpenMP loops).
+function(soak_physics_sources target)
+  target_sources(${target} PRIVATE ${ARGN})
+  if(SOAK_WITH_CUDA)
+    set_source_files_properties(${ARGN} TARGET_DIRECTORY ${target} PROPERTIES LANGUAGE CUDA)
+  endif()
+endfunction()
+
+function(soak_target_options target)
+  target_compile_options(${target} PRIVATE
+    $<$<COMPILE_LANGUAGE:CXX>:-Wall -Wextra>
+    $<$<COMPILE_LANGUAGE:CUDA>:--extended-lambda --expt-relaxed-constexpr -Xcompiler=-fopenmp -Xcompiler=-Wall --diag-suppress=20012>)
+  if(SOAK_WITH_CUDA)
+    target_compile_definitions(${target} PRIVATE SOAK_WITH_CUDA=1)
+  endif()
+endfunction()
