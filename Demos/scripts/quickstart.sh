@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# First command of the README: install what is missing, build Release, run
+# the default scene into a ParaView-ready folder. Idempotent.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+bash Demos/scripts/install-deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release
+scene=${SOAK_SCENE:-Scenes/falling_particles.xml}
+out=soak-out/default
+build/release/bin/soak run "$scene" -o "$out" "$@"
+echo
+echo "ParaView-ready output: $(pwd)/$out"
+echo "  open it:   paraview $out/water.pvd"
+echo "  (or File > Open in ParaView, pick water.pvd, Apply; press Play to animate)"
