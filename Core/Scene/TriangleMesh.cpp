@@ -1,0 +1,101 @@
+#include "Scene/TriangleMesh.h"
+
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "Base/Error.h"
+
+namespace soak {
+
+namespace {
+// tinyobjloader reads "nan" or "inf" as 0 without a word; check vertex lines
+// ourselves so such a file is refused with its line number.
+void checkVertexLines(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot open OBJ mesh", path);
+  std::string line;
+  for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+    if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
+    std::istringstream tokens(line.substr(2));
+    std::string tok;
+    for (int c = 0; c < 3 && tokens >> tok; ++c) {
+      char* end = nullptr;
+      double v = std::strtod(tok.c_str(), &end);
+      if (*end || !std::isfinite(v))
+        throw InputError("vertex coordinate '" + tok + "' is not a finite number", path + ":" + std::to_string(lineNo));
+    }
+  }
+}
+}  // namespace
+
+TriangleMesh loadObjMesh(const std::string& path) {
+  checkVertexLines(path);
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(path, config)) {
+    std::string why = reader.Error();
+    while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+    throw InputError("cannot read OBJ mesh: " + (why.empty() ? std::string("unknown error") : why), path);
+  }
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  TriangleMesh mesh;
+  const std::size_t nv = attrib.vertices.size() / 3;
+  mesh.vertices.resize(nv);
+  for (std::size_t i = 0; i < nv; ++i)
+    mesh.vertices[i] = Vec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    std::size_t offset = 0;
+    for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+      const int k = shape.mesh.num_face_vertices[f];
+      if (k != 3) throw InputError("face " + std::to_string(f + 1) + " of '" + shape.name + "' has " +
+                                       std::to_string(k) + " vertices after triangulation", path);
+      std::array<int, 3> t{};
+      for (int c = 0; c < 3; ++c) t[c] = shape.mesh.indices[offset + c].vertex_index;
+      mesh.triangles.push_back(t);
+      offset += 3;
+    }
+  }
+  validateClothMesh(mesh, path);
+  return mesh;
+}
+
+void validateClothMesh(const TriangleMesh& mesh, const std::string& name) {
+  const int nv = static_cast<int>(mesh.vertices.size());
+  for (int i = 0; i < nv; ++i)
+    if (!isFinite(mesh.vertices[i]))
+      throw InputError("vertex " + std::to_string(i + 1) + " has a NaN or infinite coordinate", name);
+  if (mesh.triangles.empty()) throw InputError("mesh has no triangles", name);
+  std::map<std::pair<int, int>, int> edgeUse;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    for (int c = 0; c < 3; ++c)
+      if (t[c] < 0 || t[c] >= nv)
+        throw InputError("triangle " + std::to_string(f + 1) + " uses vertex index " + std::to_string(t[c] + 1) +
+                             ", out of range 1.." + std::to_string(nv), name);
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      throw InputError("triangle " + std::to_string(f + 1) + " is degenerate (a vertex repeats)", name);
+    const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    const float area2 = length(cross(b - a, c - a));
+    const float scale = std::max({lengthSquared(b - a), lengthSquared(c - a), lengthSquared(c - b)});
+    if (!(area2 > 1e-7f * scale))
+      throw InputError("triangle " + std::to_string(f + 1) + " is degenerate (zero area)", name);
+    for (int c2 = 0; c2 < 3; ++c2) {
+      int u = t[c2], v = t[(c2 + 1) % 3];
+      if (++edgeUse[{std::min(u, v), std::max(u, v)}] > 2)
+        throw InputError("edge between vertices " + std::to_string(std::min(u, v) + 1) + " and " +
+                             std::to_string(std::max(u, v) + 1) +
+                             " is shared by more than two triangles (non-manifold; cloth meshes allow at most two, "
+                             "paper Section 3.2)",
+                         name);
+    }
+  }
+}
+
+}  // namespace soak

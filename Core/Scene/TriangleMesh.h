@@ -1,0 +1,26 @@
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "Base/Vec3.h"
+
+namespace soak {
+
+struct TriangleMesh {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+// Loads an OBJ file through tinyobjloader (polygons are triangulated).
+// Throws InputError naming the file for: a file that cannot be read or
+// parsed, a NaN or infinite coordinate, a face index out of range, no
+// triangles, a degenerate triangle (repeated vertex or zero area), or an
+// edge shared by more than two triangles (the paper's one restriction on
+// cloth meshes, Section 3.2).
+TriangleMesh loadObjMesh(const std::string& path);
+
+// The checks above on a mesh from any source; `name` is used in messages.
+void validateClothMesh(const TriangleMesh& mesh, const std::string& name);
+
+}  // namespace soak
