@@ -10,7 +10,13 @@
 namespace soak {
 
 NeighbourGrid::NeighbourGrid(Device device)
-    : device_(device), start_(device), end_(device), cellKey_(device), bucket_(device), order_(device) {}
+    : device_(device),
+      start_(device),
+      end_(device),
+      cellKey_(device),
+      bucket_(device),
+      order_(device),
+      sortedKeys_(device) {}
 
 namespace {
 // Smallest b with 2^b >= n (at least 1, at most 30: 3 x 10 key bits).
@@ -57,11 +63,11 @@ void NeighbourGrid::build(ParticleState& particles, float cellSize) {
   // then read memory that is close together.
   particles.gather(order);
   // Keys follow the same order.
-  Buffer<std::uint32_t> sortedKeys(device_, n);
-  std::uint32_t* sk = sortedKeys.data();
+  sortedKeys_.resize(n);
+  std::uint32_t* sk = sortedKeys_.data();
   const std::uint32_t* ck = key;
   forEach(device_, n, SOAK_LAMBDA(int i) { sk[i] = ck[order[i]]; }, "grid.sortKeys");
-  cellKey_.swap(sortedKeys);
+  cellKey_.swap(sortedKeys_);
 
   std::uint32_t* start = start_.data();
   std::uint32_t* end = end_.data();
@@ -104,7 +110,8 @@ GridView NeighbourGrid::view() const {
 }
 
 std::size_t NeighbourGrid::bytes() const {
-  return (start_.capacity() + end_.capacity() + cellKey_.capacity() + bucket_.capacity() + order_.capacity()) *
+  return (start_.capacity() + end_.capacity() + cellKey_.capacity() + bucket_.capacity() + order_.capacity() +
+          sortedKeys_.capacity()) *
          sizeof(std::uint32_t);
 }
 
