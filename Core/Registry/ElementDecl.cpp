@@ -47,80 +47,55 @@ std::string ParamDecl::rangeText() const {
   return s;
 }
 
-ElementDecl& ElementDecl::real(const std::string& n, const std::string& unit, const std::string& def,
-                               const std::string& desc, double lo, double hi, bool loExclusive) {
+namespace {
+ParamDecl& addParam(std::vector<ParamDecl>& params, const std::string& name, ParamType type, const std::string& unit,
+                    const std::string& def, const std::string& desc) {
   ParamDecl p;
-  p.name = n;
-  p.type = ParamType::Real;
+  p.name = name;
+  p.type = type;
   p.unit = unit;
   p.defaultValue = def;
   p.description = desc;
+  params.push_back(p);
+  return params.back();
+}
+}  // namespace
+
+ElementDecl& ElementDecl::real(const std::string& n, const std::string& unit, const std::string& def,
+                               const std::string& desc, double lo, double hi, bool loExclusive) {
+  ParamDecl& p = addParam(params, n, ParamType::Real, unit, def, desc);
   p.min = lo;
   p.max = hi;
   p.minExclusive = loExclusive;
-  params.push_back(p);
   return *this;
 }
 ElementDecl& ElementDecl::integer(const std::string& n, const std::string& def, const std::string& desc, double lo,
                                   double hi) {
-  ParamDecl p;
-  p.name = n;
-  p.type = ParamType::Integer;
-  p.defaultValue = def;
-  p.description = desc;
+  ParamDecl& p = addParam(params, n, ParamType::Integer, "", def, desc);
   p.min = lo;
   p.max = hi;
-  params.push_back(p);
   return *this;
 }
 ElementDecl& ElementDecl::boolean(const std::string& n, const std::string& def, const std::string& desc) {
-  ParamDecl p;
-  p.name = n;
-  p.type = ParamType::Boolean;
-  p.defaultValue = def;
-  p.description = desc;
-  params.push_back(p);
+  addParam(params, n, ParamType::Boolean, "", def, desc);
   return *this;
 }
 ElementDecl& ElementDecl::vector(const std::string& n, const std::string& unit, const std::string& def,
                                  const std::string& desc) {
-  ParamDecl p;
-  p.name = n;
-  p.type = ParamType::Vector;
-  p.unit = unit;
-  p.defaultValue = def;
-  p.description = desc;
-  params.push_back(p);
+  addParam(params, n, ParamType::Vector, unit, def, desc);
   return *this;
 }
 ElementDecl& ElementDecl::text(const std::string& n, const std::string& def, const std::string& desc, bool required) {
-  ParamDecl p;
-  p.name = n;
-  p.type = ParamType::Text;
-  p.defaultValue = def;
-  p.description = desc;
-  p.required = required;
-  params.push_back(p);
+  addParam(params, n, ParamType::Text, "", def, desc).required = required;
   return *this;
 }
 ElementDecl& ElementDecl::choice(const std::string& n, const std::vector<std::string>& choices,
                                  const std::string& def, const std::string& desc) {
-  ParamDecl p;
-  p.name = n;
-  p.type = ParamType::Choice;
-  p.choices = choices;
-  p.defaultValue = def;
-  p.description = desc;
-  params.push_back(p);
+  addParam(params, n, ParamType::Choice, "", def, desc).choices = choices;
   return *this;
 }
 ElementDecl& ElementDecl::integerList(const std::string& n, const std::string& def, const std::string& desc) {
-  ParamDecl p;
-  p.name = n;
-  p.type = ParamType::IntegerList;
-  p.defaultValue = def;
-  p.description = desc;
-  params.push_back(p);
+  addParam(params, n, ParamType::IntegerList, "", def, desc);
   return *this;
 }
 
