@@ -56,7 +56,8 @@ void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
     if (isWater(phase[i])) water.push_back(i);
   std::sort(water.begin(), water.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
   std::vector<Vec3> points(water.size());
-  PointArray v{"velocity", 3, {}}, m{"mass", 1, {}}, r{"radius", 1, {}}, ids{"id", 1, {}};
+  const std::vector<float> density = sim.fluid.downloadDensity(int(phase.size()));
+  PointArray v{"velocity", 3, {}}, m{"mass", 1, {}}, r{"radius", 1, {}}, ids{"id", 1, {}}, rho{"density", 1, {}};
   for (std::size_t k = 0; k < water.size(); ++k) {
     std::size_t i = water[k];
     points[k] = pos[i].xyz();
@@ -64,10 +65,12 @@ void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
     m.values.push_back(mass[i]);
     r.values.push_back(radius[i]);
     ids.values.push_back(static_cast<float>(id[i]));
+    rho.values.push_back(density[i]);
   }
   const std::string file = frameName("water", frame, "vtu");
-  writeParticlesVtu(dir_ + "/water/" + file, points, {v, m, r, ids});
+  writeParticlesVtu(dir_ + "/water/" + file, points, {v, m, r, ids, rho});
   water_.add(sim.time(), "water/" + file);
+  writeCloth(sim, frame);
 
   StatsRow row;
   row.add("frame", frame);
@@ -78,6 +81,42 @@ void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
   row.add("step_ms", stepMs);
   writeStatsRow(row);
   ++frames_;
+}
+
+void FrameWriter::writeCloth(Simulation& sim, int frame) {
+  const auto& objects = sim.cloth.objects();
+  if (objects.empty()) return;
+  ParticleState& ps = sim.particles;
+  std::vector<Float4> pos = ps.downloadPositions();
+  std::vector<Vec3> vel = ps.downloadVelocities();
+  std::vector<int> phase = ps.downloadPhases(), id = ps.downloadIds();
+  std::vector<std::vector<float>> channels;
+  for (int c = 0; c < ps.channelCount(); ++c) channels.push_back(ps.downloadChannel(c));
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    const ClothObject& obj = objects[k];
+    const std::string name = "cloth_" + obj.name;
+    if (cloth_.size() <= k) {
+      makeDirectories(dir_ + "/" + name);
+      cloth_.push_back(std::make_unique<PvdCollection>(dir_ + "/" + name + ".pvd"));
+    }
+    std::vector<Vec3> points(obj.vertexCount);
+    PointArray v{"velocity", 3, std::vector<float>(3 * obj.vertexCount)};
+    std::vector<PointArray> data{v};
+    for (int c = 0; c < ps.channelCount(); ++c)
+      data.push_back({ps.channelName(c), 1, std::vector<float>(obj.vertexCount)});
+    for (std::size_t i = 0; i < phase.size(); ++i) {
+      if (phase[i] != obj.phase) continue;
+      const int local = id[i] - obj.firstVertex;
+      points[local] = pos[i].xyz();
+      data[0].values[3 * local] = vel[i].x;
+      data[0].values[3 * local + 1] = vel[i].y;
+      data[0].values[3 * local + 2] = vel[i].z;
+      for (int c = 0; c < ps.channelCount(); ++c) data[c + 1].values[local] = channels[c][i];
+    }
+    const std::string file = frameName(name, frame, "vtp");
+    writeMeshVtp(dir_ + "/" + name + "/" + file, points, obj.localTriangles, data);
+    cloth_[k]->add(sim.time(), name + "/" + file);
+  }
 }
 
 void FrameWriter::writeStatsRow(const StatsRow& row) {

@@ -13,6 +13,7 @@ class Simulation;
 
 // Writes a run's folder:
 //   OUT/water.pvd + OUT/water/water_NNNNNN.vtu   water particles
+//   OUT/cloth_<name>.pvd + OUT/cloth_<name>/*.vtp  each cloth as a triangle mesh
 //   OUT/stats.csv                                 one row per frame
 //   OUT/scene.xml                                 the scene as run
 class FrameWriter {
@@ -25,8 +26,10 @@ class FrameWriter {
 
  private:
   void writeStatsRow(const StatsRow& row);
+  void writeCloth(Simulation& sim, int frame);
   std::string dir_;
   PvdCollection water_;
+  std::vector<std::unique_ptr<PvdCollection>> cloth_;
   std::ofstream stats_;
   std::vector<std::string> statsColumns_;
   int frames_ = 0;

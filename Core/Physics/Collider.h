@@ -16,6 +16,7 @@ struct Collider {
   float friction = 0.f;  // fraction of tangential motion removed on contact, [0, 1]
   int inside = 0;     // box/sphere: 1 keeps particles inside (a container)
   Vec3 velocity;      // for moving colliders: surface velocity (friction is relative to it)
+  Vec3 displacement;  // for moving colliders: translation from the scene's placement
 };
 
 // Signed distance from p to the collider surface, positive in the allowed

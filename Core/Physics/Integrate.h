@@ -7,6 +7,10 @@
 
 namespace soak {
 
+// Collision radius as a fraction of the support radius (h = 2 r0, so a
+// particle's collision sphere has radius r0 / 2).
+constexpr float kCollisionRadiusScale = 0.25f;
+
 // v += dt * g ; x* = x + dt * v  (particles with inverse mass 0 stay put).
 // `accel`, if given, is an extra per-particle acceleration added to gravity.
 void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Vec3* accel = nullptr);

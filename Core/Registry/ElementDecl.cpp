@@ -137,4 +137,13 @@ bool ElementParams::given(const std::string& n) const {
   return it != given_.end() && it->second;
 }
 
+std::string ElementParams::resolvePath(const std::string& file) const {
+  if (file.empty() || file[0] == '/') return file;
+  std::string scene = where_;
+  const auto colon = scene.rfind(':');
+  if (colon != std::string::npos) scene = scene.substr(0, colon);
+  const auto slash = scene.rfind('/');
+  return slash == std::string::npos ? file : scene.substr(0, slash + 1) + file;
+}
+
 }  // namespace soak

@@ -67,6 +67,8 @@ class ElementParams {
   bool given(const std::string& n) const;
 
   const std::string& where() const { return where_; }  // "file:line" of the element
+  // `file` relative to the folder of the scene file (unless absolute).
+  std::string resolvePath(const std::string& file) const;
   const ElementDecl& decl() const { return *decl_; }
 
   void set(const std::string& n, ParamValue v, bool given);

@@ -1,8 +1,10 @@
 // The scene elements Core provides, each declared once.
 #include <cmath>
+#include <sstream>
 
 #include "Base/Error.h"
 #include "Registry/ModuleRegistry.h"
+#include "Simulation/ElementGroups.h"
 #include "Simulation/Simulation.h"
 
 namespace soak {
@@ -18,6 +20,11 @@ class SimulationModule : public Module {
     sim.settings.frameRate = p_.real("frameRate");
     sim.settings.gravity = p_.vector("gravity");
     sim.settings.maxSpeed = p_.realf("maxSpeed");
+    sim.settings.clothIterations = int(p_.integer("clothIterations"));
+    sim.settings.domainMin = p_.vector("domainMin");
+    sim.settings.domainMax = p_.vector("domainMax");
+    sim.couplingPasses = int(p_.integer("couplingPasses"));
+    sim.contactPasses = int(p_.integer("contactPasses"));
   }
 
  private:
@@ -32,6 +39,12 @@ class WaterModule : public Module {
     sim.water.supportRadius = p_.realf("supportRadius");
     sim.water.restDensity = p_.realf("restDensity");
     sim.water.particleMass = p_.realf("particleMass");
+    sim.water.iterations = int(p_.integer("iterations"));
+    sim.water.relaxation = p_.realf("relaxation");
+    sim.water.artificialPressure = p_.realf("artificialPressure");
+    sim.water.artificialPressureRadius = p_.realf("artificialPressureRadius");
+    sim.water.viscosity = p_.realf("viscosity");
+    sim.water.vorticity = p_.realf("vorticity");
   }
 
  private:
@@ -96,13 +109,68 @@ class ColliderModule : public Module {
       c.radius = p_.realf("radius");
       c.inside = p_.boolean("inside") ? 1 : 0;
     }
+    base_ = c;
+    path_ = parsePath(p_.text("path"), p_.where());
+    index_ = int(sim.colliders.size());
+    const std::string name = p_.text("name");
+    for (const auto& other : sim.colliderNames)
+      if (!name.empty() && other == name)
+        throw InputError("a collider named '" + name + "' already exists", p_.where());
     sim.colliders.push_back(c);
+    sim.colliderNames.push_back(name);
+    sim.collidersChanged();
+  }
+  // A scripted collider moves to where its path is at the end of the step.
+  void beforeStep(Simulation& sim) override {
+    if (path_.size() < 2) return;
+    const double dt = sim.settings.timeStep;
+    const Vec3 now = offsetAt(sim.time()), next = offsetAt(sim.time() + dt);
+    Collider c = base_;
+    if (shape_ != kColliderPlane) c.b = c.b + (shape_ == kColliderBox ? next : Vec3(0.f, 0.f, 0.f));
+    c.a = c.a + next;
+    c.displacement = next;
+    c.velocity = (next - now) / float(dt);
+    sim.colliders[index_] = c;
     sim.collidersChanged();
   }
 
  private:
+  struct Key {
+    double time;
+    Vec3 offset;
+  };
+  // "t x y z; t x y z; ..." with increasing times.
+  static std::vector<Key> parsePath(const std::string& text, const std::string& where) {
+    std::vector<Key> keys;
+    std::istringstream all(text);
+    for (std::string item; std::getline(all, item, ';');) {
+      if (item.find_first_not_of(" \t\n") == std::string::npos) continue;
+      std::istringstream in(item);
+      Key k;
+      std::string extra;
+      if (!(in >> k.time >> k.offset.x >> k.offset.y >> k.offset.z) || (in >> extra))
+        throw InputError("path: '" + item + "' is not 'time x y z'", where);
+      if (!keys.empty() && k.time <= keys.back().time)
+        throw InputError("path: key times must increase", where);
+      keys.push_back(k);
+    }
+    return keys;
+  }
+  // Piecewise-linear offset; held constant before the first and after the last key.
+  Vec3 offsetAt(double t) const {
+    if (t <= path_.front().time) return path_.front().offset;
+    for (std::size_t k = 1; k < path_.size(); ++k)
+      if (t <= path_[k].time) {
+        const float a = float((t - path_[k - 1].time) / (path_[k].time - path_[k - 1].time));
+        return path_[k - 1].offset * (1.f - a) + path_[k].offset * a;
+      }
+    return path_.back().offset;
+  }
   ElementParams p_;
   int shape_;
+  Collider base_;
+  std::vector<Key> path_;
+  int index_ = -1;
 };
 
 // <Plugin> is acted on by the scene loader (it loads the library before the
@@ -121,6 +189,11 @@ void registerCoreElements(ModuleRegistry& r) {
             .vector("gravity", "m/s^2", "0 -9.81 0", "Gravitational acceleration; +y is up by default.")
             .real("maxSpeed", "m/s", "50", "A particle faster than this is reported as an instability.", 0.0,
                   1e9, true)
+            .integer("clothIterations", "8", "Cloth solver iterations n_s per step (Eq. 5).", 1, 1000)
+            .integer("couplingPasses", "2", "Passes of the water-triangle constraint (Eq. 21) per step.", 1, 100)
+            .integer("contactPasses", "2", "Passes of cloth self and cloth-cloth contact per step.", 0, 100)
+            .vector("domainMin", "m", "-1000 -1000 -1000", "Water below this corner is removed (drained).")
+            .vector("domainMax", "m", "1000 1000 1000", "Water above this corner is removed (drained).")
             .makeUnique()
             .create([](const ElementParams& p) { return std::make_unique<SimulationModule>(p); }));
   r.add(ElementDecl("Water", "Properties of water particles (Table 1).", "Water")
@@ -128,6 +201,14 @@ void registerCoreElements(ModuleRegistry& r) {
             .real("supportRadius", "m", "0.04", "SPH support radius h.", 0.0, 10.0, true)
             .real("restDensity", "kg/m^3", "1000", "Rest density rho0 of water.", 0.0, 1e6, true)
             .real("particleMass", "kg", "0.0082", "Mass of a full water particle.", 0.0, 1e6, true)
+            .integer("iterations", "8", "Density constraint iterations per step.", 1, 1000)
+            .real("relaxation", "", "0.2",
+                  "Constraint relaxation epsilon, relative to the denominator of a particle at rest.", 0.0, 1e6)
+            .real("artificialPressure", "", "0.001",
+                  "k of the s_corr term, as a fraction of a full density error's correction.", 0.0, 1.0)
+            .real("artificialPressureRadius", "", "0.2", "delta q of s_corr, relative to h.", 0.0, 1.0, true)
+            .real("viscosity", "", "0.01", "XSPH viscosity c.", 0.0, 1.0)
+            .real("vorticity", "m/s", "0", "Vorticity confinement epsilon (0: off).", 0.0, 1e3)
             .makeUnique()
             .create([](const ElementParams& p) { return std::make_unique<WaterModule>(p); }));
   r.add(ElementDecl("WaterBlock", "A box filled with water particles on a lattice of the water spacing.", "Water")
@@ -140,6 +221,8 @@ void registerCoreElements(ModuleRegistry& r) {
             .vector("point", "m", "0 0 0", "A point on the plane.")
             .vector("normal", "", "0 1 0", "Normal (need not be unit length).")
             .real("friction", "", "0.1", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
+            .text("name", "", "Name, for cloth attachTo.")
+            .text("path", "", "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.")
             .create([](const ElementParams& p) { return std::make_unique<ColliderModule>(p, kColliderPlane); }));
   r.add(ElementDecl("Box", "Axis-aligned box collider: a solid obstacle, or a container with inside=\"true\".",
                     "Colliders")
@@ -147,6 +230,8 @@ void registerCoreElements(ModuleRegistry& r) {
             .vector("max", "m", "1 1 1", "Upper corner.")
             .boolean("inside", "false", "Keep particles inside the box (a tank) instead of outside.")
             .real("friction", "", "0.1", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
+            .text("name", "", "Name, for cloth attachTo.")
+            .text("path", "", "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.")
             .create([](const ElementParams& p) { return std::make_unique<ColliderModule>(p, kColliderBox); }));
   r.add(ElementDecl("Sphere", "Sphere collider: a solid ball, or a spherical container with inside=\"true\".",
                     "Colliders")
@@ -154,6 +239,8 @@ void registerCoreElements(ModuleRegistry& r) {
             .real("radius", "m", "0.1", "Radius.", 0.0, 1e6, true)
             .boolean("inside", "false", "Keep particles inside the sphere instead of outside.")
             .real("friction", "", "0.1", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
+            .text("name", "", "Name, for cloth attachTo.")
+            .text("path", "", "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.")
             .create([](const ElementParams& p) { return std::make_unique<ColliderModule>(p, kColliderSphere); }));
   r.add(ElementDecl("Plugin",
                     "Loads a plugin library before the rest of the scene is read: by name from the plugin "
@@ -162,6 +249,8 @@ void registerCoreElements(ModuleRegistry& r) {
             .text("name", "", "Plugin name, e.g. WetCloth (file libsoak_<name>.so in the plugin directory).")
             .text("path", "", "Path of the plugin library; used instead of name when given.")
             .create([](const ElementParams&) { return std::make_unique<NoModule>(); }));
+  registerClothElement(r);
+  registerWaterSourceElements(r);
 }
 
 }  // namespace soak

@@ -10,6 +10,9 @@ struct SimulationSettings {
   double frameRate = 30.0;     // output frames per simulated second
   Vec3 gravity{0.f, -9.81f, 0.f};
   float maxSpeed = 50.f;       // m/s; a faster particle is an instability
+  int clothIterations = 8;     // n_s of the cloth constraints (Eq. 5)
+  Vec3 domainMin{-1e3f, -1e3f, -1e3f};  // water leaving this box is drained
+  Vec3 domainMax{1e3f, 1e3f, 1e3f};
 };
 
 // Water particle defaults from <Water> (Table 1).
@@ -18,6 +21,12 @@ struct WaterSettings {
   float supportRadius = 0.04f;  // h, m
   float restDensity = 1000.f;   // kg/m^3
   float particleMass = 0.0082f; // kg
+  int iterations = 8;           // PBF solver iterations per step
+  float relaxation = 0.2f;      // epsilon of lambda, relative to the rest-lattice denominator
+  float artificialPressure = 0.001f;  // k of s_corr, in units of a full density error
+  float artificialPressureRadius = 0.2f;  // delta q / h
+  float viscosity = 0.01f;      // XSPH c
+  float vorticity = 0.0f;       // vorticity confinement epsilon, m/s
 };
 
 }  // namespace soak

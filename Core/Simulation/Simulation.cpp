@@ -3,16 +3,17 @@
 #include <algorithm>
 
 #include "Backend/Primitives.h"
+#include "Backend/ForEach.h"
+#include "Cloth/ClothContact.h"
+#include "Cloth/ClothSolve.h"
+#include "Coupling/TriangleCoupling.h"
 #include "Physics/Integrate.h"
 
 namespace soak {
 
-// Collision radius as a fraction of the support radius (h = 2 r0, so a
-// particle's collision sphere has radius r0 / 2).
-constexpr float kCollisionRadiusScale = 0.25f;
-
 Simulation::Simulation(Device device)
-    : particles(device), grid(device), device_(device), colliderBuffer_(device) {}
+    : particles(device), grid(device), cloth(device), fluid(device), device_(device), contactDelta_(device),
+      removeFlag_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
 Simulation::~Simulation() = default;
 
@@ -21,7 +22,13 @@ void Simulation::addModule(std::unique_ptr<Module> module) { modules_.push_back(
 void Simulation::initialize() {
   for (auto& m : modules_) m->configure(*this);
   maxSupportRadius_ = std::max(maxSupportRadius_, water.supportRadius);
+  fluid.configure(water);
   for (auto& m : modules_) m->setup(*this);
+  cloth.upload();
+  cloth.updateSlots(particles.view());
+  std::vector<Vec3> sinkCorners;
+  for (const auto& box : sinks) sinkCorners.insert(sinkCorners.end(), {box.first, box.second});
+  sinkBuffer_.upload(sinkCorners);
   addCoreStages();
   for (auto& m : modules_) m->addStages(pipeline, *this);
 }
@@ -30,15 +37,73 @@ void Simulation::addCoreStages() {
   pipeline.append({"predict", [](Simulation& s) {
                      predictPositions(s.device(), s.particles.view(), s.settings.gravity, s.settings.timeStep);
                    }});
-  pipeline.append({"neighbours", [](Simulation& s) { s.grid.build(s.particles, s.maxSupportRadius()); }});
+  // Before the grid is built, so that removing particles never leaves a stale grid.
+  pipeline.append({"drain", [](Simulation& s) { s.drainWater(); }});
+  pipeline.append({"neighbours", [](Simulation& s) {
+                     s.grid.build(s.particles, s.maxSupportRadius());
+                     if (!s.cloth.empty()) {
+                       s.cloth.updateSlots(s.particles.view());
+                       s.fluid.computeBoundaryVolumes(s);
+                     }
+                   }});
+  pipeline.append({"fluid.solve", [](Simulation& s) { s.fluid.solve(s); }});
+  pipeline.append({"cloth.solve", [](Simulation& s) {
+                     if (s.cloth.empty()) return;
+                     ParticleView p = s.particles.view();
+                     ClothView c = s.cloth.view();
+                     moveAttachedVertices(s.device(), p, c, s.deviceColliders());
+                     s.cloth.resetMultipliers();
+                     solveClothConstraints(s.device(), p, c, s.cloth.edgeColourStart(), s.cloth.bendColourStart(),
+                                           s.settings.clothIterations, float(s.settings.timeStep));
+                     s.contactDelta_.resize(p.count);
+                     resolveClothContacts(s.device(), p, s.grid.view(), c, s.contactDelta_.data(), s.contactPasses);
+                   }});
   pipeline.append({"collide", [](Simulation& s) {
                      projectColliders(s.device(), s.particles.view(), s.deviceColliders(),
                                       static_cast<int>(s.colliders.size()), kCollisionRadiusScale,
                                       s.settings.timeStep);
                    }});
+  pipeline.append({"coupling", [](Simulation& s) {
+                     if (s.cloth.empty()) return;
+                     projectWaterOutOfCloth(s.device(), s.particles.view(), s.grid.view(), s.cloth.view(),
+                                            s.couplingStiffness, s.couplingPasses);
+                   }});
   pipeline.append({"finalize", [](Simulation& s) {
                      updateVelocities(s.device(), s.particles.view(), s.settings.timeStep);
+                     s.fluid.applyViscosity(s);
                    }});
+}
+
+void Simulation::drainWater() {
+  ParticleView p = particles.view();
+  if (p.count == 0) return;
+  removeFlag_.resize(p.count);
+  removedMass_.resize(p.count);
+  int* flag = removeFlag_.data();
+  float* removed = removedMass_.data();
+  const Vec3 lo = settings.domainMin, hi = settings.domainMax;
+  const Vec3* sinkBox = sinkBuffer_.data();
+  const int sinkCount = int(sinks.size());
+  forEach(device_, p.count, SOAK_LAMBDA(int i) {
+    flag[i] = 0;
+    removed[i] = 0.f;
+    if (!isWater(p.phase[i])) return;
+    const Vec3 x = p.position[i].xyz();
+    bool out = !(x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z);
+    for (int k = 0; k < sinkCount && !out; ++k) {
+      const Vec3 a = sinkBox[2 * k], b = sinkBox[2 * k + 1];
+      out = x.x >= a.x && x.y >= a.y && x.z >= a.z && x.x <= b.x && x.y <= b.y && x.z <= b.z;
+    }
+    if (out) {
+      flag[i] = 1;
+      removed[i] = p.mass[i];
+    }
+  }, "drain.flag");
+  const double mass = reduceSum(device_, removed, p.count);
+  if (mass > 0.0) {
+    drainedWaterMass += mass;
+    particles.removeFlagged(flag);
+  }
 }
 
 void Simulation::step(bool profile) {
@@ -56,20 +121,36 @@ StatsRow Simulation::collectStats() {
   StatsRow row;
   std::vector<int> phase = particles.downloadPhases();
   std::vector<float> mass = particles.downloadMasses();
-  long long water = 0, cloth = 0;
+  long long water = 0, clothCount = 0;
   double waterMass = 0.0;
   for (std::size_t i = 0; i < phase.size(); ++i) {
     if (isWater(phase[i])) {
       ++water;
       waterMass += mass[i];
     } else if (isCloth(phase[i])) {
-      ++cloth;
+      ++clothCount;
     }
   }
+  std::vector<Vec3> velocity = particles.downloadVelocities();
+  float maxSpeed = 0.f;
+  double kinetic = 0.0;
+  for (std::size_t i = 0; i < velocity.size(); ++i) {
+    maxSpeed = std::max(maxSpeed, length(velocity[i]));
+    kinetic += 0.5 * double(mass[i]) * double(lengthSquared(velocity[i]));
+  }
   row.add("water_particles", double(water));
-  row.add("cloth_particles", double(cloth));
+  row.add("cloth_particles", double(clothCount));
   row.add("free_water_mass", waterMass);
   row.add("drained_water_mass", drainedWaterMass);
+  row.add("emitted_water_mass", emittedWaterMass);
+  double meanError = 0.0;
+  float maxError = 0.f;
+  if (stepIndex_ > 0) fluid.densityError(*this, meanError, maxError);
+  row.add("mean_density_error", meanError);
+  row.add("max_density_error", maxError);
+  row.add("max_speed", maxSpeed);
+  row.add("kinetic_energy", kinetic);
+  row.add("max_stretch", cloth.empty() ? 0.0 : double(cloth.maxStretch(particles.view())));
   for (auto& m : modules_) m->addStats(*this, row);
   return row;
 }

@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "Backend/Buffer.h"
+#include "Cloth/ClothSystem.h"
+#include "Fluid/FluidSolver.h"
 #include "Neighbours/NeighbourGrid.h"
 #include "Particles/ParticleState.h"
 #include "Physics/Collider.h"
@@ -31,6 +33,9 @@ class Simulation {
   // One time step.
   void step(bool profile = false);
 
+  // Removes water inside sinks or outside the domain (counted as drained).
+  void drainWater();
+
   // Counts and water budget for stats.csv (one reduction per call).
   StatsRow collectStats();
 
@@ -39,7 +44,19 @@ class Simulation {
   ParticleState particles;
   NeighbourGrid grid;
   std::vector<Collider> colliders;  // host copy; uploaded when changed
+  std::vector<std::string> colliderNames;  // parallel to colliders ("" if unnamed)
+  ClothSystem cloth;
+  FluidSolver fluid;
   Pipeline pipeline;
+  // Sink boxes (min, max): water inside is removed and counted as drained.
+  std::vector<std::pair<Vec3, Vec3>> sinks;
+  // kappa_couple per cloth vertex for Eq. 21 (null: 1, a dry cloth). A
+  // module such as WetCloth points it at its own device array.
+  const float* couplingStiffness = nullptr;
+  // Passes of the water-triangle constraint per step (n_s of Eq. 5 for it).
+  int couplingPasses = 2;
+  // Passes of cloth contact (self and cloth-cloth) per step.
+  int contactPasses = 2;
 
   long long stepIndex() const { return stepIndex_; }
   double time() const { return time_; }
@@ -55,12 +72,18 @@ class Simulation {
 
   // Water mass removed by sinks or by leaving the domain (kg).
   double drainedWaterMass = 0.0;
+  // Water mass added by emitters after the start (kg).
+  double emittedWaterMass = 0.0;
   // Serial numbers for new water particles (the `id` array).
   int nextWaterId = 0;
 
  private:
   void addCoreStages();
   Device device_;
+  Buffer<Vec3> contactDelta_;
+  Buffer<int> removeFlag_;
+  Buffer<float> removedMass_;
+  Buffer<Vec3> sinkBuffer_;
   std::vector<std::unique_ptr<Module>> modules_;
   Buffer<Collider> colliderBuffer_;
   bool collidersDirty_ = true;

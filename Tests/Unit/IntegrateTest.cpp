@@ -33,7 +33,8 @@ TEST(Integrate, FreeFallMatchesSymplecticEuler) {
 
 TEST(Integrate, ParticlesComeToRestOnPlane) {
   test::TestRegistry reg;
-  auto sim = scene("<Plane point=\"0 0 0\" normal=\"0 1 0\" friction=\"0.5\"/>"
+  // Spacing above h: the particles do not interact, only the plane acts.
+  auto sim = scene("<Water spacing=\"0.05\"/><Plane point=\"0 0 0\" normal=\"0 1 0\" friction=\"0.5\"/>"
                    "<WaterBlock min=\"0 0.2 0\" max=\"0.1 0.3 0.1\"/>",
                    reg);
   for (int k = 0; k < 200; ++k) sim->step();
@@ -61,7 +62,7 @@ TEST(Integrate, BoxContainerKeepsParticlesInside) {
 
 TEST(Integrate, SphereDeflectsFallingParticles) {
   test::TestRegistry reg;
-  auto sim = scene("<Sphere center=\"0 0 0\" radius=\"0.3\" friction=\"0\"/>"
+  auto sim = scene("<Water spacing=\"0.05\"/><Sphere center=\"0 0 0\" radius=\"0.3\" friction=\"0\"/>"
                    "<WaterBlock min=\"0.05 0.5 -0.05\" max=\"0.15 0.6 0.05\"/>",
                    reg);
   const float r = 0.25f * sim->water.supportRadius;

@@ -1,0 +1,200 @@
+#include "Cloth/ClothSystem.h"
+
+#include <algorithm>
+
+#include "Backend/ForEach.h"
+#include "Backend/Primitives.h"
+#include "Cloth/ConstraintColoring.h"
+
+namespace soak {
+
+ClothSystem::ClothSystem(Device device)
+    : device_(device),
+      dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
+      dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
+      dTriList_(device), dAttach_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), scratch_(device) {}
+
+int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
+  const int clothIndex = int(objects_.size());
+  const int first = vertexCount();
+  ClothTopology topo = buildClothTopology(spec.mesh);
+  ClothObject obj;
+  obj.name = spec.name;
+  obj.phase = clothPhase(clothIndex);
+  obj.firstVertex = first;
+  obj.vertexCount = int(spec.mesh.vertices.size());
+  obj.firstTriangle = int(triangles_.size());
+  obj.triangleCount = int(spec.mesh.triangles.size());
+  obj.localTriangles = spec.mesh.triangles;
+
+  float thickness = spec.thickness;
+  if (thickness <= 0.f) {
+    double sum = 0.0;
+    for (float l : topo.edgeRestLength) sum += l;
+    thickness = topo.edgeRestLength.empty() ? 0.01f : float(0.75 * sum / double(topo.edgeRestLength.size()));
+  }
+  maxThickness_ = std::max(maxThickness_, thickness);
+  std::vector<char> pinned(spec.mesh.vertices.size(), 0);
+  for (int v : spec.pinned) pinned[v] = 1;
+  std::vector<ParticleInit> batch(spec.mesh.vertices.size());
+  for (std::size_t v = 0; v < batch.size(); ++v) {
+    ParticleInit& q = batch[v];
+    q.position = spec.mesh.vertices[v];
+    q.mass = spec.particleMass;
+    q.radius = spec.supportRadius;
+    q.phase = obj.phase;
+    q.id = first + int(v);
+    q.pinned = pinned[v] != 0;
+    restPosition_.push_back(spec.mesh.vertices[v]);
+    attach_.push_back(pinned[v] ? spec.attachCollider : -1);
+    thickness_.push_back(thickness);
+  }
+  particles.append(batch);
+  // Tethers to the nearest pinned vertices, as long as their rest distance
+  // (the geodesic distance on a flat sheet; shorter than it on a curved mesh,
+  // where a tether then also limits bending away from the pins).
+  std::vector<int> pins;
+  for (std::size_t v = 0; v < pinned.size(); ++v)
+    if (pinned[v]) pins.push_back(int(v));
+  for (std::size_t v = 0; v < batch.size(); ++v) {
+    std::vector<std::pair<float, int>> near;
+    if (!pinned[v])
+      for (int q : pins) near.emplace_back(length(spec.mesh.vertices[v] - spec.mesh.vertices[q]), q);
+    std::sort(near.begin(), near.end());
+    for (int k = 0; k < kTethers; ++k) {
+      const bool has = k < int(near.size());
+      tetherPin_.push_back(has ? first + near[k].second : -1);
+      tetherLength_.push_back(has ? near[k].first : 0.f);
+    }
+  }
+
+  for (std::size_t e = 0; e < topo.edges.size(); ++e) {
+    edges_.push_back({first + topo.edges[e][0], first + topo.edges[e][1]});
+    edgeRest_.push_back(topo.edgeRestLength[e]);
+    edgeStiffness_.push_back(spec.stretch);
+    maxEdgeLength_ = std::max(maxEdgeLength_, topo.edgeRestLength[e]);
+  }
+  for (std::size_t b = 0; b < topo.bendPairs.size(); ++b) {
+    ClothBend cb;
+    for (int a = 0; a < 4; ++a) cb.v[a] = first + topo.bendPairs[b][a];
+    bends_.push_back(cb);
+    bendRest_.push_back(topo.bendRestAngle[b]);
+    bendStiffness_.push_back(spec.bend);
+  }
+  for (const auto& t : spec.mesh.triangles) triangles_.push_back({{first + t[0], first + t[1], first + t[2]}});
+  objects_.push_back(std::move(obj));
+  return clothIndex;
+}
+
+namespace {
+template <class T>
+std::vector<T> permuted(const std::vector<T>& v, const std::vector<int>& order) {
+  std::vector<T> out(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
+  return out;
+}
+}  // namespace
+
+void ClothSystem::upload() {
+  const int nv = vertexCount();
+  std::vector<int> ev;
+  for (const auto& e : edges_) ev.insert(ev.end(), {e.a, e.b});
+  ColouredOrder ec = colourConstraints(ev, 2, nv);
+  std::vector<int> bv;
+  for (const auto& b : bends_) bv.insert(bv.end(), {b.v[0], b.v[1], b.v[2], b.v[3]});
+  ColouredOrder bc = colourConstraints(bv, 4, nv);
+  edgeColourStart_ = ec.colourStart.empty() ? std::vector<int>{0} : ec.colourStart;
+  bendColourStart_ = bc.colourStart.empty() ? std::vector<int>{0} : bc.colourStart;
+
+  dEdges_.upload(permuted(edges_, ec.order));
+  dEdgeRest_.upload(permuted(edgeRest_, ec.order));
+  dEdgeStiffness_.upload(permuted(edgeStiffness_, ec.order));
+  dEdgeLambda_.resize(edges_.size());
+  dBends_.upload(permuted(bends_, bc.order));
+  dBendRest_.upload(permuted(bendRest_, bc.order));
+  dBendStiffness_.upload(permuted(bendStiffness_, bc.order));
+  dBendLambda_.resize(bends_.size());
+  resetMultipliers();
+  dTriangles_.upload(triangles_);
+  // Triangles touching each vertex (CSR).
+  std::vector<int> start(nv + 1, 0);
+  for (const auto& t : triangles_)
+    for (int a = 0; a < 3; ++a) ++start[t.v[a] + 1];
+  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<int> list(start[nv]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < triangles_.size(); ++t)
+    for (int a = 0; a < 3; ++a) list[fill[triangles_[t].v[a]]++] = int(t);
+  dTriStart_.upload(start);
+  dTriList_.upload(list);
+  dRest_.upload(restPosition_);
+  dAttach_.upload(attach_);
+  dThickness_.upload(thickness_);
+  dTetherPin_.upload(tetherPin_);
+  dTetherLength_.upload(tetherLength_);
+  dSlot_.resize(nv);
+  scratch_.resize(std::max<std::size_t>(edges_.size(), 1));
+}
+
+ClothView ClothSystem::view() {
+  ClothView v;
+  v.edges = dEdges_.data();
+  v.edgeRest = dEdgeRest_.data();
+  v.edgeStiffness = dEdgeStiffness_.data();
+  v.edgeLambda = dEdgeLambda_.data();
+  v.bends = dBends_.data();
+  v.bendRest = dBendRest_.data();
+  v.bendStiffness = dBendStiffness_.data();
+  v.bendLambda = dBendLambda_.data();
+  v.triangles = dTriangles_.data();
+  v.vertexTriangleStart = dTriStart_.data();
+  v.vertexTriangles = dTriList_.data();
+  v.restPosition = dRest_.data();
+  v.attachCollider = dAttach_.data();
+  v.thickness = dThickness_.data();
+  v.tetherPin = dTetherPin_.data();
+  v.tetherLength = dTetherLength_.data();
+  v.vertexSlot = dSlot_.data();
+  v.vertexCount = vertexCount();
+  v.edgeCount = int(dEdges_.size());
+  v.bendCount = int(dBends_.size());
+  v.triangleCount = int(dTriangles_.size());
+  return v;
+}
+
+void ClothSystem::updateSlots(ParticleView p) {
+  int* slot = dSlot_.data();
+  forEach(device_, p.count, SOAK_LAMBDA(int i) {
+    if (isCloth(p.phase[i])) slot[p.id[i]] = i;
+  }, "cloth.slots");
+}
+
+void ClothSystem::resetMultipliers() {
+  dEdgeLambda_.fillZero();
+  dBendLambda_.fillZero();
+}
+
+float ClothSystem::maxStretch(ParticleView p) {
+  if (dEdges_.size() == 0) return 0.f;
+  ClothView c = view();
+  float* strain = scratch_.data();
+  forEach(device_, c.edgeCount, SOAK_LAMBDA(int e) {
+    Vec3 a = p.position[c.vertexSlot[c.edges[e].a]].xyz();
+    Vec3 b = p.position[c.vertexSlot[c.edges[e].b]].xyz();
+    strain[e] = fabsf(length(a - b) - c.edgeRest[e]) / c.edgeRest[e];
+  }, "cloth.strain");
+  return reduceMax(device_, strain, c.edgeCount);
+}
+
+std::vector<Vec3> ClothSystem::downloadVertexPositions(const ParticleState& particles, int clothIndex) const {
+  const ClothObject& obj = objects_[clothIndex];
+  std::vector<Float4> pos = particles.downloadPositions();
+  std::vector<int> ids = particles.downloadIds();
+  std::vector<int> phase = particles.downloadPhases();
+  std::vector<Vec3> out(obj.vertexCount);
+  for (std::size_t i = 0; i < pos.size(); ++i)
+    if (phase[i] == obj.phase) out[ids[i] - obj.firstVertex] = pos[i].xyz();
+  return out;
+}
+
+}  // namespace soak

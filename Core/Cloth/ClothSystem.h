@@ -1,0 +1,132 @@
+#pragma once
+// All cloth objects of a run: their constraints (coloured for parallel
+// Gauss-Seidel), rest shapes and triangles, on the simulation's device.
+// Cloth vertices are particles; `vertexSlot` maps a global cloth vertex
+// index (the particle's `id`) to its slot after each neighbour sort.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "Backend/Buffer.h"
+#include "Cloth/ClothConstraints.h"
+#include "Cloth/ClothTopology.h"
+#include "Particles/ParticleState.h"
+
+namespace soak {
+
+constexpr int kTethers = 4;
+
+struct ClothEdge {
+  int a, b;
+};
+struct ClothBend {
+  int v[4];
+};
+struct ClothTriangle {
+  int v[3];
+};
+
+// What the cloth stages see (raw device pointers, passed to kernels).
+struct ClothView {
+  const ClothEdge* edges = nullptr;  // in colour order
+  const float* edgeRest = nullptr;
+  const ConstraintStiffness* edgeStiffness = nullptr;
+  float* edgeLambda = nullptr;
+  const ClothBend* bends = nullptr;  // in colour order
+  const float* bendRest = nullptr;
+  const ConstraintStiffness* bendStiffness = nullptr;
+  float* bendLambda = nullptr;
+  const ClothTriangle* triangles = nullptr;
+  const int* vertexTriangleStart = nullptr;  // CSR: triangles touching each vertex
+  const int* vertexTriangles = nullptr;
+  const Vec3* restPosition = nullptr;  // per vertex, as created
+  const int* attachCollider = nullptr; // per vertex: collider index it moves with, or -1
+  const float* thickness = nullptr;    // per vertex: cloth thickness (contact distance), m
+  int* vertexSlot = nullptr;           // per vertex: current particle slot
+  // Long-range attachments ("tethers", Kim et al. 2012): vertex v stays
+  // within tetherLength of pinned vertex tetherPin (kTethers per vertex, -1: none).
+  const int* tetherPin = nullptr;
+  const float* tetherLength = nullptr;
+  int vertexCount = 0, edgeCount = 0, bendCount = 0, triangleCount = 0;
+};
+
+// How one cloth object is made (host side, from a <Cloth> element).
+struct ClothSpec {
+  std::string name;
+  TriangleMesh mesh;
+  float particleMass = 0.0066f;   // kg per vertex (Table 1)
+  float supportRadius = 0.04f;    // h of cloth particles as boundary / porous particles
+  ConstraintStiffness stretch, bend;
+  std::vector<int> pinned;        // local vertex indices with inverse mass 0
+  int attachCollider = -1;        // pinned vertices follow this collider (-1: fixed)
+  float thickness = 0.f;          // contact distance, m (0: 0.75 x mean edge length)
+};
+
+struct ClothObject {
+  std::string name;
+  int phase = 0;
+  int firstVertex = 0, vertexCount = 0;
+  int firstTriangle = 0, triangleCount = 0;
+  std::vector<std::array<int, 3>> localTriangles;  // for output
+};
+
+class ClothSystem {
+ public:
+  explicit ClothSystem(Device device = Device::Cpu);
+  // Appends the cloth's vertices as particles and its constraints.
+  // Returns the cloth's index.
+  int add(const ClothSpec& spec, ParticleState& particles);
+  // Colours the constraints and uploads everything (call once, after add()).
+  void upload();
+  bool empty() const { return objects_.empty(); }
+  const std::vector<ClothObject>& objects() const { return objects_; }
+  int vertexCount() const { return int(restPosition_.size()); }
+  int stretchColours() const { return int(edgeColourStart_.size()) - 1; }
+  int bendColours() const { return int(bendColourStart_.size()) - 1; }
+  const std::vector<int>& edgeColourStart() const { return edgeColourStart_; }
+  const std::vector<int>& bendColourStart() const { return bendColourStart_; }
+  float maxEdgeLength() const { return maxEdgeLength_; }
+  float maxThickness() const { return maxThickness_; }
+  ClothView view();
+  // Recomputes vertexSlot from the particles' ids (after a reorder).
+  void updateSlots(ParticleView p);
+  // Zeroes the XPBD multipliers (start of each step).
+  void resetMultipliers();
+  // Largest relative edge strain |l - l0| / l0 over all edges.
+  float maxStretch(ParticleView p);
+  // Host copy of the positions of one cloth's vertices, in vertex order.
+  std::vector<Vec3> downloadVertexPositions(const ParticleState& particles, int clothIndex) const;
+
+ private:
+  Device device_;
+  std::vector<ClothObject> objects_;
+  // Host staging, in creation order until upload() colours them.
+  std::vector<ClothEdge> edges_;
+  std::vector<float> edgeRest_;
+  std::vector<ConstraintStiffness> edgeStiffness_;
+  std::vector<ClothBend> bends_;
+  std::vector<float> bendRest_;
+  std::vector<ConstraintStiffness> bendStiffness_;
+  std::vector<ClothTriangle> triangles_;
+  std::vector<Vec3> restPosition_;
+  std::vector<int> attach_;
+  std::vector<float> thickness_;
+  std::vector<int> tetherPin_;
+  std::vector<float> tetherLength_;
+  std::vector<int> edgeColourStart_, bendColourStart_;
+  float maxEdgeLength_ = 0.f, maxThickness_ = 0.f;
+  Buffer<ClothEdge> dEdges_;
+  Buffer<float> dEdgeRest_, dEdgeLambda_;
+  Buffer<ConstraintStiffness> dEdgeStiffness_;
+  Buffer<ClothBend> dBends_;
+  Buffer<float> dBendRest_, dBendLambda_;
+  Buffer<ConstraintStiffness> dBendStiffness_;
+  Buffer<ClothTriangle> dTriangles_;
+  Buffer<int> dTriStart_, dTriList_, dAttach_, dSlot_;
+  Buffer<float> dThickness_, dTetherLength_;
+  Buffer<int> dTetherPin_;
+  Buffer<Vec3> dRest_;
+  Buffer<float> scratch_;
+};
+
+}  // namespace soak

@@ -1,0 +1,56 @@
+#pragma once
+// The water-triangle constraint of Eq. 21: a water particle that would cross
+// a cloth triangle between its old and predicted positions (or come closer
+// than the coupling distance d) is put back on the side it came from.
+#include "Cloth/ClothSystem.h"
+#include "Neighbours/GridView.h"
+
+namespace soak {
+
+// Signed-side test and correction for one particle and one triangle.
+// x0: particle's previous position, x: predicted position; a0..c0 and
+// a..c: the triangle's previous and predicted vertices. Returns the
+// displacement that satisfies C >= 0 (zero if the constraint holds or the
+// particle does not pass through the triangle's interior).
+SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, Vec3 c0, Vec3 a, Vec3 b, Vec3 c,
+                                            float d) {
+  const Vec3 zero(0.f, 0.f, 0.f);
+  Vec3 n = cross(b - a, c - a);
+  const float area2 = length(n);
+  if (area2 < 1e-14f) return zero;
+  n = n / area2;
+  Vec3 n0 = normalizedOrZero(cross(b0 - a0, c0 - a0));
+  if (dot(n0, n) <= 0.f) n0 = n;  // triangle flipped within a step: trust the new normal
+  // The side the particle came from (the +/- of Eq. 21).
+  const float sigma = dot(x0 - a0, n0) >= 0.f ? 1.f : -1.f;
+  const float s1 = sigma * dot(x - a, n);
+  const float C = s1 - d;
+  if (C >= 0.f) return zero;
+  // Where the particle meets the triangle's plane: the crossing point of its
+  // path when it crossed, else its predicted position.
+  Vec3 q = x;
+  if (s1 < 0.f) {
+    const float sA = sigma * dot(x0 - a, n);
+    if (sA > 0.f) q = x0 + (x - x0) * (sA / (sA - s1));
+  }
+  q = q - n * dot(q - a, n);
+  // Barycentric coordinates of q in (a, b, c).
+  const Vec3 e0 = b - a, e1 = c - a, e2 = q - a;
+  const float d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
+  const float den = d00 * d11 - d01 * d01;
+  if (den <= 0.f) return zero;
+  const float v = (d11 * d20 - d01 * d21) / den;
+  const float w = (d00 * d21 - d01 * d20) / den;
+  const float tol = -1e-3f;
+  if (v < tol || w < tol || 1.f - v - w < tol) return zero;
+  return n * (sigma * -C);
+}
+
+// One pass of Eq. 21 over all water particles against the triangles of the
+// cloth particles around them. `vertexStiffness` (per cloth vertex, may be
+// null for 1) gives kappa_couple of a triangle as the mean of its vertices
+// (Eq. 22 is this mean); the correction is scaled by Eq. 5 for `passes`.
+void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
+                            int passes);
+
+}  // namespace soak

@@ -1,0 +1,323 @@
+#include "Fluid/FluidSolver.h"
+
+#include <cmath>
+
+#include "Backend/ForEach.h"
+#include "Backend/Primitives.h"
+#include "Fluid/SphKernels.h"
+#include "Physics/Integrate.h"
+#include "Simulation/Simulation.h"
+
+namespace soak {
+
+// Units used below (Doc/model.md, "Water"): masses are relative to the water
+// particle mass m0 (mu_i = m_i / m0, psi_k = rho0 V_k / m0 for a cloth
+// boundary particle) and Lambda_i = m0 * lambda_i, so that
+//   Lambda_i = -C_i rho0^2 / (G_i + eps G0),
+//   G_i = sum_j mu_j |g_ij|^2 + sum_k psi_k^2 / mu_k |g_ik|^2 + |sum_j mu_j g_ij + sum_k psi_k g_ik|^2 / mu_i,
+//   dx_i = 1 / (rho0 m0) [ sum_j (Lambda_i mu_j / mu_i + Lambda_j + s_ij mu_j) g_ij + sum_k Lambda_i psi_k / mu_i g_ik ],
+//   dx_k = 1 / (rho0 m0) psi_k / mu_k sum_j Lambda_j g_kj          (cloth reaction),
+// with g_ij the Spiky gradient of W(x_i - x_j, h_ij) with respect to x_i.
+// With equal masses and no cloth this is exactly PBF's
+// dx_i = 1/rho0 sum_j (lambda_i + lambda_j + s_corr) grad W_ij.
+
+FluidSolver::FluidSolver(Device device)
+    : device_(device), lambda_(device), density_(device), volume_(device), scratch_(device), delta_(device),
+      omega_(device) {}
+
+void FluidSolver::configure(const WaterSettings& water) {
+  const float h = water.supportRadius, s = water.spacing;
+  const int reach = int(std::ceil(h / s)) + 1;
+  double g2 = 0.0, w = 0.0;
+  for (int k = -reach; k <= reach; ++k)
+    for (int j = -reach; j <= reach; ++j)
+      for (int i = -reach; i <= reach; ++i) {
+        Vec3 x(float(i) * s, float(j) * s, float(k) * s);
+        float r = length(x);
+        w += poly6(r * r, h);
+        g2 += lengthSquared(spikyGradient(x, r, h));
+      }
+  restDenominator_ = float(g2);
+  wall_ = makeWallDensityTable(s, h, water.particleMass);
+  restKernelSum_ = float(w);
+}
+
+std::vector<float> FluidSolver::downloadDensity(int count) const {
+  std::vector<float> out = density_.download();
+  out.resize(std::size_t(count), 0.f);
+  return out;
+}
+
+void FluidSolver::resize(int n) {
+  lambda_.resize(n);
+  density_.resize(n);
+  volume_.resize(n);
+  scratch_.resize(n);
+  delta_.resize(n);
+  omega_.resize(n);
+}
+
+std::size_t FluidSolver::bytes() const {
+  return lambda_.capacity() * 4 * 4 + delta_.capacity() * sizeof(Vec3) * 2;
+}
+
+void FluidSolver::computeBoundaryVolumes(Simulation& sim) {
+  ParticleView p = sim.particles.view();
+  resize(p.count);
+  GridView g = sim.grid.view();
+  float* volume = volume_.data();
+  forEach(device_, p.count, SOAK_LAMBDA(int i) {
+    const int phase = p.phase[i];
+    if (!isCloth(phase)) {
+      volume[i] = 0.f;
+      return;
+    }
+    const Vec3 xi = p.predicted[i].xyz();
+    const float hi = p.radius[i];
+    float sum = 0.f;
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      if (p.phase[j] != phase) return;
+      sum += poly6(lengthSquared(xi - p.predicted[j].xyz()), pairSupport(hi, p.radius[j]));
+    });
+    volume[i] = sum > 0.f ? 1.f / sum : 0.f;
+  }, "fluid.volume");
+}
+
+namespace {
+
+struct CorrectionConstants {
+  float rho0, m0, corrK, corrQ, moveScale;
+  const Collider* colliders;
+  int colliderCount;
+  const WallDensityTable* wall;
+};
+
+// dx of every water particle and of the cloth particles it touches, from the
+// multipliers `lam` (see the units comment above), then x* += dx.
+void applyDensityCorrections(Device d, ParticleView p, GridView g, const float* lam, const float* volume, Vec3* delta,
+                             CorrectionConstants k) {
+  const float rho0 = k.rho0, m0 = k.m0, corrK = k.corrK, corrQ = k.corrQ, moveScale = k.moveScale;
+  const Collider* colliders = k.colliders;
+  const int colliderCount = k.colliderCount;
+  const WallDensityTable wall = *k.wall;
+    // Position corrections of water particles and of the cloth they touch.
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    const int phi = p.phase[i];
+    const Float4 xi4 = p.predicted[i];
+    Vec3 dx(0.f, 0.f, 0.f);
+    if (isWater(phi)) {
+      const Vec3 xi = xi4.xyz();
+      const float hi = p.radius[i], mui = p.mass[i] / m0, li = lam[i];
+      forEachCandidate(g, g.cellKey[i], [&](int j) {
+        if (j == i) return;
+        const int phj = p.phase[j];
+        if (!isWater(phj) && !isCloth(phj)) return;
+        const Vec3 xij = xi - p.predicted[j].xyz();
+        const float r2 = lengthSquared(xij);
+        const float h = pairSupport(hi, p.radius[j]);
+        if (r2 >= h * h) return;
+        const Vec3 gr = spikyGradient(xij, sqrtf(r2), h);
+        const float muj = p.mass[j] / m0;
+        if (isWater(phj)) {
+          // Artificial pressure s_corr = -k (W(r) / W(dq))^4 against clumping.
+          float ratio = poly6(r2, h) / poly6(corrQ * corrQ * h * h, h);
+          float scorr = -corrK * ratio * ratio * ratio * ratio;
+          dx += gr * (li * muj / mui + lam[j] + scorr * muj);
+        } else {
+          dx += gr * (li * (rho0 * volume[j] / m0) / mui);
+        }
+      });
+      dx = dx * moveScale;
+    } else if (isCloth(phi) && xi4.w > 0.f) {
+      const Vec3 xi = xi4.xyz();
+      const float hi = p.radius[i];
+      const float psi = rho0 * volume[i] / m0, mui = p.mass[i] / m0;
+      forEachCandidate(g, g.cellKey[i], [&](int j) {
+        if (!isWater(p.phase[j])) return;
+        const Vec3 xij = xi - p.predicted[j].xyz();
+        const float r2 = lengthSquared(xij);
+        const float h = pairSupport(hi, p.radius[j]);
+        if (r2 >= h * h) return;
+        dx += spikyGradient(xij, sqrtf(r2), h) * lam[j];
+      });
+      dx = dx * (moveScale * psi / mui);
+    }
+    delta[i] = dx;
+  }, "fluid.delta");
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    Float4 x = p.predicted[i];
+    if (x.w > 0.f) p.predicted[i] = Float4(x.xyz() + delta[i], x.w);
+  }, "fluid.apply");
+}
+
+}  // namespace
+
+void FluidSolver::solve(Simulation& sim) {
+  ParticleView p = sim.particles.view();
+  if (p.count == 0) return;
+  resize(p.count);
+  GridView g = sim.grid.view();
+  const WaterSettings ws = sim.water;
+  const float rho0 = ws.restDensity, m0 = ws.particleMass;
+  const float eps = ws.relaxation * restDenominator_;
+  const float corrK = ws.artificialPressure * rho0 * rho0 / restDenominator_;
+  const float corrQ = ws.artificialPressureRadius;
+  const Collider* colliders = sim.deviceColliders();
+  const int colliderCount = int(sim.colliders.size());
+  const WallDensityTable wall = wall_;
+  const CorrectionConstants k{rho0, m0, corrK, corrQ, 1.f / (rho0 * m0), colliders, colliderCount, &wall_};
+  float* lam = lambda_.data();
+  float* rho = density_.data();
+  const float* volume = volume_.data();
+  Vec3* delta = delta_.data();
+  for (int it = 0; it < ws.iterations; ++it) {
+    // Lambda of every water particle (Eq. 6-7 and the mass-weighted PBD step).
+    forEach(device_, p.count, SOAK_LAMBDA(int i) {
+      if (!isWater(p.phase[i])) {
+        lam[i] = 0.f;
+        return;
+      }
+      const Vec3 xi = p.predicted[i].xyz();
+      const float hi = p.radius[i], mui = p.mass[i] / m0;
+      float dens = 0.f, sumG2 = 0.f;
+      Vec3 gradSelf(0.f, 0.f, 0.f);
+      forEachCandidate(g, g.cellKey[i], [&](int j) {
+        const int phj = p.phase[j];
+        if (!isWater(phj) && !isCloth(phj)) return;
+        const Float4 xj = p.predicted[j];
+        const Vec3 xij = xi - xj.xyz();
+        const float r2 = lengthSquared(xij);
+        const float h = pairSupport(hi, p.radius[j]);
+        if (r2 >= h * h) return;
+        const float r = sqrtf(r2);
+        const float muj = p.mass[j] / m0;
+        if (isWater(phj)) {
+          dens += muj * poly6(r2, h);
+          if (j == i) return;
+          Vec3 gr = spikyGradient(xij, r, h);
+          gradSelf += gr * muj;
+          sumG2 += muj * lengthSquared(gr);
+        } else {
+          const float psi = rho0 * volume[j] / m0;
+          dens += psi * poly6(r2, h);
+          Vec3 gr = spikyGradient(xij, r, h);
+          gradSelf += gr * psi;
+          if (xj.w > 0.f) sumG2 += psi * psi / muj * lengthSquared(gr);
+        }
+      });
+      if (colliderCount > 0) {
+        Vec3 wallGradient;
+        dens += collidersDensity(wall, colliders, colliderCount, xi, wallGradient) / m0;
+        gradSelf += wallGradient * (1.f / m0);
+      }
+      rho[i] = dens * m0;
+      const float C = fmaxf(rho[i] / rho0 - 1.f, 0.f);  // unilateral: compression only
+      const float G = sumG2 + lengthSquared(gradSelf) / mui;
+      lam[i] = -C * rho0 * rho0 / (G + eps);
+    }, "fluid.lambda");
+    applyDensityCorrections(device_, p, g, lam, volume, delta, k);
+    projectColliders(device_, p, sim.deviceColliders(), int(sim.colliders.size()), kCollisionRadiusScale,
+                     float(sim.settings.timeStep));
+  }
+}
+
+void FluidSolver::applyViscosity(Simulation& sim) {
+  const WaterSettings ws = sim.water;
+  if (ws.viscosity <= 0.f && ws.vorticity <= 0.f) return;
+  ParticleView p = sim.particles.view();
+  if (p.count == 0) return;
+  resize(p.count);
+  GridView g = sim.grid.view();
+  const float rho0 = ws.restDensity, c = ws.viscosity, vort = ws.vorticity;
+  const float dt = float(sim.settings.timeStep);
+  const float* rho = density_.data();
+  Vec3* vnew = delta_.data();
+  Vec3* omega = omega_.data();
+  float* omegaNorm = scratch_.data();
+  forEach(device_, p.count, SOAK_LAMBDA(int i) {
+    const Vec3 vi = p.velocity[i];
+    vnew[i] = vi;
+    omega[i] = Vec3(0.f, 0.f, 0.f);
+    omegaNorm[i] = 0.f;
+    if (!isWater(p.phase[i])) return;
+    const Vec3 xi = p.position[i].xyz();
+    const float hi = p.radius[i];
+    Vec3 visc(0.f, 0.f, 0.f), w(0.f, 0.f, 0.f);
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      if (j == i || !isWater(p.phase[j])) return;
+      const Vec3 xij = xi - p.position[j].xyz();
+      const float r2 = lengthSquared(xij);
+      const float h = pairSupport(hi, p.radius[j]);
+      if (r2 >= h * h) return;
+      const float vol = p.mass[j] / fmaxf(rho[j], 0.5f * rho0);
+      const Vec3 vij = p.velocity[j] - vi;
+      visc += vij * (vol * poly6(r2, h));
+      w += cross(vij, spikyGradient(xij, sqrtf(r2), h)) * (-vol);  // curl v (Macklin & Mueller, Eq. 15)
+    });
+    vnew[i] = vi + visc * c;  // XSPH
+    omega[i] = w;
+    omegaNorm[i] = length(w);
+  }, "fluid.xsph");
+  if (vort > 0.f) {
+    forEach(device_, p.count, SOAK_LAMBDA(int i) {
+      if (!isWater(p.phase[i])) return;
+      const Vec3 xi = p.position[i].xyz();
+      const float hi = p.radius[i];
+      Vec3 eta(0.f, 0.f, 0.f);
+      forEachCandidate(g, g.cellKey[i], [&](int j) {
+        if (j == i || !isWater(p.phase[j])) return;
+        const Vec3 xij = xi - p.position[j].xyz();
+        const float r2 = lengthSquared(xij);
+        const float h = pairSupport(hi, p.radius[j]);
+        if (r2 >= h * h) return;
+        const float vol = p.mass[j] / fmaxf(rho[j], 0.5f * rho0);
+        eta += spikyGradient(xij, sqrtf(r2), h) * (vol * omegaNorm[j]);
+      });
+      const Vec3 N = normalizedOrZero(eta);
+      vnew[i] += cross(N, omega[i]) * (vort * dt);  // vorticity confinement force, as acceleration
+    }, "fluid.vorticity");
+  }
+  forEach(device_, p.count, SOAK_LAMBDA(int i) { p.velocity[i] = vnew[i]; }, "fluid.velocity");
+}
+
+void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
+  ParticleView p = sim.particles.view();
+  mean = 0.0;
+  max = 0.f;
+  if (p.count == 0) return;
+  resize(p.count);
+  GridView g = sim.grid.view();
+  const float rho0 = sim.water.restDensity;
+  const Collider* colliders = sim.deviceColliders();
+  const int colliderCount = int(sim.colliders.size());
+  const WallDensityTable wall = wall_;
+  float* err = scratch_.data();
+  const float* volume = volume_.data();
+  forEach(device_, p.count, SOAK_LAMBDA(int i) {
+    err[i] = 0.f;
+    if (!isWater(p.phase[i])) return;
+    const Vec3 xi = p.position[i].xyz();
+    const float hi = p.radius[i];
+    float dens = 0.f;
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      const int phj = p.phase[j];
+      const float h = pairSupport(hi, p.radius[j]);
+      const float r2 = lengthSquared(xi - p.position[j].xyz());
+      if (isWater(phj)) dens += p.mass[j] * poly6(r2, h);
+      else if (isCloth(phj)) dens += rho0 * volume[j] * poly6(r2, h);
+    });
+    if (colliderCount > 0) {
+      Vec3 wallGradient;
+      dens += collidersDensity(wall, colliders, colliderCount, xi, wallGradient);
+    }
+    err[i] = fmaxf(dens / rho0 - 1.f, 0.f);
+  }, "fluid.error");
+  max = fmaxf(reduceMax(device_, err, p.count), 0.f);
+  const double sum = reduceSum(device_, err, p.count);
+  std::vector<int> phase = sim.particles.downloadPhases();
+  long long water = 0;
+  for (int ph : phase) water += isWater(ph) ? 1 : 0;
+  mean = water > 0 ? sum / double(water) : 0.0;
+}
+
+}  // namespace soak

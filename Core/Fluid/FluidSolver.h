@@ -1,0 +1,50 @@
+#pragma once
+// Position Based Fluids (paper Eq. 6-7) with cloth particles as boundary
+// particles (Akinci et al. 2012), written as mass-weighted PBD so that water
+// particles of different masses and radii (partial absorption, drips) stay
+// symmetric and momentum conserving. See Doc/model.md, "Water".
+#include "Backend/Buffer.h"
+#include "Fluid/WallDensity.h"
+#include "Neighbours/GridView.h"
+#include "Particles/ParticleState.h"
+#include "Simulation/Settings.h"
+
+namespace soak {
+
+class Simulation;
+
+class FluidSolver {
+ public:
+  explicit FluidSolver(Device device);
+  // Rest-lattice constants (the relaxation's reference denominator).
+  void configure(const WaterSettings& water);
+  // Volume V_k = 1 / sum_l W_kl of every cloth particle over the particles
+  // of its own cloth (Akinci; the paper's V_i of Eq. 10) and its boundary
+  // mass psi_k = rho0 V_k. Valid after the neighbour stage of a step.
+  void computeBoundaryVolumes(Simulation& sim);
+  // The density constraint, `water.iterations` times; each iteration also
+  // projects the colliders.
+  void solve(Simulation& sim);
+  // XSPH viscosity and vorticity confinement on the new velocities.
+  void applyViscosity(Simulation& sim);
+  // Relative compression max(0, rho/rho0 - 1) of water particles at the
+  // current positions: mean and max.
+  void densityError(Simulation& sim, double& mean, float& max);
+
+  const float* boundaryVolume() const { return volume_.data(); }
+  // Density of each slot from the last solver iteration (kg/m^3).
+  std::vector<float> downloadDensity(int count) const;
+  float restDenominator() const { return restDenominator_; }
+  std::size_t bytes() const;
+
+ private:
+  void resize(int n);
+  Device device_;
+  float restDenominator_ = 1.f;  // G0: sum_j |grad W|^2 over a full rest lattice
+  float restKernelSum_ = 1.f;
+  WallDensityTable wall_;
+  Buffer<float> lambda_, density_, volume_, scratch_;
+  Buffer<Vec3> delta_, omega_;
+};
+
+}  // namespace soak

@@ -1,0 +1,7 @@
+#pragma once
+// Core's scene elements, registered by registerCoreElements() in groups.
+namespace soak {
+class ModuleRegistry;
+void registerClothElement(ModuleRegistry& r);         // Cloth/ClothElement.cpp
+void registerWaterSourceElements(ModuleRegistry& r);  // Simulation/WaterSources.cpp
+}  // namespace soak

@@ -1,0 +1,97 @@
+// Cloth constraints (Eq. 8-9), their colouring, and a hanging sheet.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "Cloth/ClothConstraints.h"
+#include "Cloth/ClothTopology.h"
+#include "Cloth/ConstraintColoring.h"
+#include "Support/TestScenes.h"
+
+using namespace soak;
+
+TEST(ClothConstraint, StretchRestoresLengthWeightedByInverseMass) {
+  float lambda = 0.f;
+  Vec3 d1, d2;
+  ConstraintStiffness k;  // PBD, k' = 1
+  projectStretch(Vec3(0, 0, 0), 1.f, Vec3(2, 0, 0), 3.f, 1.f, k, 0.015f, lambda, d1, d2);
+  const Vec3 a = Vec3(0, 0, 0) + d1, b = Vec3(2, 0, 0) + d2;
+  EXPECT_NEAR(length(b - a), 1.f, 1e-6f);
+  // Momentum: m1 d1 + m2 d2 = 0 with m = 1 / w.
+  EXPECT_NEAR(d1.x * 1.f + d2.x / 3.f, 0.f, 1e-6f);
+  EXPECT_NEAR(d1.x, 0.25f, 1e-6f);
+}
+
+TEST(ClothConstraint, PerIterationStiffnessCompoundsToKappa) {
+  // Eq. 5: n applications of k' leave (1 - k) of the violation.
+  const float k = 0.3f;
+  const int n = 7;
+  const float kp = perIterationStiffness(k, n);
+  EXPECT_NEAR(std::pow(1.f - kp, float(n)), 1.f - k, 1e-5f);
+}
+
+TEST(ClothConstraint, BendDrivesDihedralAngleToRest) {
+  Vec3 x[4] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5f, 0.f, 1.f), Vec3(0.5f, 0.6f, -0.8f)};
+  const float w[4] = {1.f, 1.f, 1.f, 1.f};
+  const float rest = 3.14159265f * 0.75f;
+  ConstraintStiffness k;
+  float lambda = 0.f;
+  for (int it = 0; it < 50; ++it) {
+    Vec3 dx[4];
+    projectBend(x, w, rest, k, 0.015f, lambda, dx);
+    Vec3 sum(0, 0, 0);
+    for (int a = 0; a < 4; ++a) {
+      x[a] += dx[a];
+      sum += dx[a];
+    }
+    EXPECT_NEAR(length(sum), 0.f, 1e-5f);  // equal masses: the centre of mass stays
+  }
+  EXPECT_NEAR(dihedralAngle(x[0], x[1], x[2], x[3]), rest, 1e-3f);
+}
+
+TEST(ClothConstraint, ColouringNeverSharesAVertexWithinAColour) {
+  TriangleMesh sheet = makeRectangularSheet(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), 1.f, 1.f, 12, 9);
+  ClothTopology topo = buildClothTopology(sheet);
+  std::vector<int> v;
+  for (const auto& b : topo.bendPairs) v.insert(v.end(), b.begin(), b.end());
+  ColouredOrder c = colourConstraints(v, 4, int(sheet.vertices.size()));
+  ASSERT_EQ(c.order.size(), topo.bendPairs.size());
+  for (int col = 0; col < c.colours(); ++col) {
+    std::set<int> seen;
+    for (int k = c.colourStart[col]; k < c.colourStart[col + 1]; ++k)
+      for (int a = 0; a < 4; ++a) EXPECT_TRUE(seen.insert(topo.bendPairs[c.order[k]][a]).second);
+  }
+  EXPECT_LE(c.colours(), 20);
+}
+
+TEST(ClothSystem, SheetPinnedAtTwoCornersHangsWithBoundedStrain) {
+  // 0.4 m sheet, 21 x 21 vertices, default solver (8 iterations, PBD k = 1,
+  // tethers to the pins), dt = 0.015 s. Bound documented in Doc/model.md.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Cloth origin='-0.2 1 -0.2' width='0.4' height='0.4' cellsU='20' cellsV='20' "
+      "pinCorners='u0v0 u1v0'/></Scene>",
+      Device::Cpu, reg);
+  float worstLate = 0.f;
+  double meanLate = 0.0;
+  int late = 0;
+  for (int s = 0; s < 400; ++s) {
+    sim->step();
+    const float strain = sim->cloth.maxStretch(sim->particles.view());
+    ASSERT_TRUE(std::isfinite(strain));
+    if (s >= 200) {
+      worstLate = std::max(worstLate, strain);
+      meanLate += strain;
+      ++late;
+    }
+  }
+  meanLate /= late;
+  std::printf("hanging sheet: max edge strain over steps 200-400: worst %.4f mean %.4f\n", worstLate, meanLate);
+  EXPECT_LT(worstLate, 0.12f);
+  EXPECT_LT(meanLate, 0.06);
+  // It hangs: the free corners are below the pins by about the sheet's length.
+  std::vector<Vec3> x = sim->cloth.downloadVertexPositions(sim->particles, 0);
+  EXPECT_LT(x.back().y, 1.f - 0.3f);
+  EXPECT_NEAR(x[0].y, 1.f, 1e-6f);
+}
