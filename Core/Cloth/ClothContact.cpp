@@ -24,12 +24,17 @@ void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec
         const float contact = 0.5f * (thi + c.thickness[vj]);
         const Float4 xj4 = p.predicted[j];
         const Vec3 xij = xi - xj4.xyz();
-        const float r2 = lengthSquared(xij);
-        if (r2 >= contact * contact) return;
+        // The pair's normal is taken from the positions at the start of the
+        // step, so a fast layer cannot tunnel through and be pushed out the
+        // wrong side.
+        const Vec3 xij0 = p.position[i].xyz() - p.position[j].xyz();
+        const float r0sq = lengthSquared(xij0);
+        if (r0sq >= 4.f * contact * contact && lengthSquared(xij) >= contact * contact) return;
         if (phj == phi && lengthSquared(resti - c.restPosition[vj]) < 1.44f * contact * contact) return;
-        const float r = sqrtf(r2);
-        const Vec3 n = r > 1e-9f ? xij / r : Vec3(0.f, 1.f, 0.f);
-        sum += n * ((contact - r) * xi4.w / (xi4.w + xj4.w));
+        const Vec3 n = r0sq > 1e-18f ? xij0 / sqrtf(r0sq) : normalizedOrZero(xij);
+        const float along = dot(xij, n);
+        if (along >= contact || lengthSquared(xij - n * along) >= contact * contact) return;
+        sum += n * ((contact - along) * xi4.w / (xi4.w + xj4.w));
         ++count;
       });
       if (count > 0) delta[i] = sum / float(count);

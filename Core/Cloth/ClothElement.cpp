@@ -47,6 +47,7 @@ class ClothModule : public Module {
     spec.particleMass = p_.realf("particleMass");
     spec.supportRadius = p_.given("supportRadius") ? p_.realf("supportRadius") : sim.water.supportRadius;
     spec.thickness = p_.realf("thickness");
+    spec.tetherSlack = p_.boolean("tethers") ? p_.realf("tetherSlack") : -1.f;
     const int iterations = sim.settings.clothIterations;
     if (p_.text("model") == "xpbd") {
       spec.stretch.compliance = p_.realf("stretchCompliance");
@@ -112,6 +113,10 @@ void registerClothElement(ModuleRegistry& r) {
             .real("thickness", "m", "0",
                   "Contact distance between cloth layers; d of Eq. 21 is half of it. 0: 0.75 x mean edge length.",
                   0.0, 10.0)
+            .boolean("tethers", "true",
+                     "Long-range attachments: no vertex moves further from its nearest pins than its rest "
+                     "distance x (1 + tetherSlack); keeps hanging cloth from over-stretching at few iterations.")
+            .real("tetherSlack", "", "0", "Relative slack of the tethers (a sheet pinned at four corners sags only by this much).", 0.0, 10.0)
             .choice("model", {"pbd", "xpbd"}, "pbd",
                     "pbd: stiffness in [0, 1] with the per-iteration factor of Eq. 5; xpbd: compliance.")
             .real("stretchStiffness", "", "1", "PBD stiffness of the stretch constraint (Eq. 8).", 0.0, 1.0)

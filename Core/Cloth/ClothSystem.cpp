@@ -58,13 +58,13 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     if (pinned[v]) pins.push_back(int(v));
   for (std::size_t v = 0; v < batch.size(); ++v) {
     std::vector<std::pair<float, int>> near;
-    if (!pinned[v])
+    if (!pinned[v] && spec.tetherSlack >= 0.f)
       for (int q : pins) near.emplace_back(length(spec.mesh.vertices[v] - spec.mesh.vertices[q]), q);
     std::sort(near.begin(), near.end());
     for (int k = 0; k < kTethers; ++k) {
       const bool has = k < int(near.size());
       tetherPin_.push_back(has ? first + near[k].second : -1);
-      tetherLength_.push_back(has ? near[k].first : 0.f);
+      tetherLength_.push_back(has ? near[k].first * (1.f + spec.tetherSlack) : 0.f);
     }
   }
 

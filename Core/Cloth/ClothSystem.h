@@ -60,6 +60,7 @@ struct ClothSpec {
   std::vector<int> pinned;        // local vertex indices with inverse mass 0
   int attachCollider = -1;        // pinned vertices follow this collider (-1: fixed)
   float thickness = 0.f;          // contact distance, m (0: 0.75 x mean edge length)
+  float tetherSlack = 0.f;        // tethers allow (1 + slack) x rest distance to the pins; < 0: no tethers
 };
 
 struct ClothObject {

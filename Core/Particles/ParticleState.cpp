@@ -107,9 +107,10 @@ int ParticleState::removeFlagged(const int* remove) {
   forEach(device_, n, SOAK_LAMBDA(int i) {
     if (keep[i]) order[off[i]] = static_cast<std::uint32_t>(i);
   }, "removeFlagged.order");
+  // Only the first `kept` entries of order are defined: gather those.
+  count_ = kept;
   gather(order);
   forEachArray([&](auto& b) { b.resize(static_cast<std::size_t>(kept)); });
-  count_ = kept;
   return n - kept;
 }
 

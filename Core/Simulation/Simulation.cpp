@@ -56,6 +56,9 @@ void Simulation::addCoreStages() {
                      solveClothConstraints(s.device(), p, c, s.cloth.edgeColourStart(), s.cloth.bendColourStart(),
                                            s.settings.clothIterations, float(s.settings.timeStep));
                      s.contactDelta_.resize(p.count);
+                     // Colliders first, so that contact sees a layer resting on the floor where it is.
+                     projectColliders(s.device(), p, s.deviceColliders(), int(s.colliders.size()),
+                                      kCollisionRadiusScale, float(s.settings.timeStep));
                      resolveClothContacts(s.device(), p, s.grid.view(), c, s.contactDelta_.data(), s.contactPasses);
                    }});
   pipeline.append({"collide", [](Simulation& s) {

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/../.."
 bash Demos/scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
-scene=${SOAK_SCENE:-Scenes/falling_particles.xml}
+scene=${SOAK_SCENE:-Scenes/fig1_jet_dry.xml}
 out=soak-out/default
 build/release/bin/soak run "$scene" -o "$out" "$@"
 echo
