@@ -57,10 +57,6 @@ void FluidSolver::resize(int n) {
   omega_.resize(n);
 }
 
-std::size_t FluidSolver::bytes() const {
-  return lambda_.capacity() * 4 * 4 + delta_.capacity() * sizeof(Vec3) * 2;
-}
-
 void FluidSolver::computeBoundaryVolumes(Simulation& sim) {
   ParticleView p = sim.particles.view();
   resize(p.count);
@@ -221,6 +217,25 @@ void FluidSolver::solve(Simulation& sim) {
   }
 }
 
+namespace {
+
+// Calls f(j, x_ij, r^2, h_ij) for every other water particle j within h_ij of
+// water particle i, at the positions after the step's velocity update.
+template <class F>
+SOAK_INLINE void forEachWaterNeighbour(const GridView& g, const ParticleView& p, int i, F&& f) {
+  const Vec3 xi = p.position[i].xyz();
+  const float hi = p.radius[i];
+  forEachCandidate(g, g.cellKey[i], [&](int j) {
+    if (j == i || !isWater(p.phase[j])) return;
+    const Vec3 xij = xi - p.position[j].xyz();
+    const float r2 = lengthSquared(xij);
+    const float h = pairSupport(hi, p.radius[j]);
+    if (r2 < h * h) f(j, xij, r2, h);
+  });
+}
+
+}  // namespace
+
 void FluidSolver::applyViscosity(Simulation& sim) {
   const WaterSettings ws = sim.water;
   if (ws.viscosity <= 0.f && ws.vorticity <= 0.f) return;
@@ -240,15 +255,8 @@ void FluidSolver::applyViscosity(Simulation& sim) {
     omega[i] = Vec3(0.f, 0.f, 0.f);
     omegaNorm[i] = 0.f;
     if (!isWater(p.phase[i])) return;
-    const Vec3 xi = p.position[i].xyz();
-    const float hi = p.radius[i];
     Vec3 visc(0.f, 0.f, 0.f), w(0.f, 0.f, 0.f);
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
-      if (j == i || !isWater(p.phase[j])) return;
-      const Vec3 xij = xi - p.position[j].xyz();
-      const float r2 = lengthSquared(xij);
-      const float h = pairSupport(hi, p.radius[j]);
-      if (r2 >= h * h) return;
+    forEachWaterNeighbour(g, p, i, [&](int j, Vec3 xij, float r2, float h) {
       const float vol = p.mass[j] / fmaxf(rho[j], 0.5f * rho0);
       const Vec3 vij = p.velocity[j] - vi;
       visc += vij * (vol * poly6(r2, h));
@@ -261,15 +269,8 @@ void FluidSolver::applyViscosity(Simulation& sim) {
   if (vort > 0.f) {
     forEach(device_, p.count, SOAK_LAMBDA(int i) {
       if (!isWater(p.phase[i])) return;
-      const Vec3 xi = p.position[i].xyz();
-      const float hi = p.radius[i];
       Vec3 eta(0.f, 0.f, 0.f);
-      forEachCandidate(g, g.cellKey[i], [&](int j) {
-        if (j == i || !isWater(p.phase[j])) return;
-        const Vec3 xij = xi - p.position[j].xyz();
-        const float r2 = lengthSquared(xij);
-        const float h = pairSupport(hi, p.radius[j]);
-        if (r2 >= h * h) return;
+      forEachWaterNeighbour(g, p, i, [&](int j, Vec3 xij, float r2, float h) {
         const float vol = p.mass[j] / fmaxf(rho[j], 0.5f * rho0);
         eta += spikyGradient(xij, sqrtf(r2), h) * (vol * omegaNorm[j]);
       });
@@ -292,9 +293,11 @@ void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
   const int colliderCount = int(sim.colliders.size());
   const WallDensityTable wall = wall_;
   float* err = scratch_.data();
+  float* isWaterFlag = lambda_.data();  // scratch here: the solver recomputes lambda every iteration
   const float* volume = volume_.data();
   forEach(device_, p.count, SOAK_LAMBDA(int i) {
     err[i] = 0.f;
+    isWaterFlag[i] = isWater(p.phase[i]) ? 1.f : 0.f;
     if (!isWater(p.phase[i])) return;
     const Vec3 xi = p.position[i].xyz();
     const float hi = p.radius[i];
@@ -314,10 +317,8 @@ void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
   }, "fluid.error");
   max = fmaxf(reduceMax(device_, err, p.count), 0.f);
   const double sum = reduceSum(device_, err, p.count);
-  std::vector<int> phase = sim.particles.downloadPhases();
-  long long water = 0;
-  for (int ph : phase) water += isWater(ph) ? 1 : 0;
-  mean = water > 0 ? sum / double(water) : 0.0;
+  const double water = reduceSum(device_, isWaterFlag, p.count);
+  mean = water > 0.0 ? sum / water : 0.0;
 }
 
 }  // namespace soak

@@ -35,7 +35,6 @@ class FluidSolver {
   // Density of each slot from the last solver iteration (kg/m^3).
   std::vector<float> downloadDensity(int count) const;
   float restDenominator() const { return restDenominator_; }
-  std::size_t bytes() const;
 
  private:
   void resize(int n);
