@@ -123,6 +123,12 @@ void applyDensityCorrections(Device d, ParticleView p, GridView g, const float* 
           dx += gr * (li * (rho0 * volume[j] / m0) / mui);
         }
       });
+      if (colliderCount > 0) {
+        // The wall's share of grad_i C_i (its density gradient), as for cloth boundary particles.
+        Vec3 wallGradient;
+        collidersDensity(wall, colliders, colliderCount, xi, wallGradient);
+        dx += wallGradient * (li / (m0 * mui));
+      }
       dx = dx * moveScale;
     } else if (isCloth(phi) && xi4.w > 0.f) {
       const Vec3 xi = xi4.xyz();
