@@ -65,6 +65,7 @@ class ParticleState {
 
   // Per-slot host copies, mostly for output and tests.
   std::vector<Float4> downloadPositions() const { return position_.download(); }
+  std::vector<Float4> downloadPredicted() const { return predicted_.download(); }
   std::vector<Vec3> downloadVelocities() const { return velocity_.download(); }
   std::vector<float> downloadMasses() const { return mass_.download(); }
   std::vector<float> downloadRadii() const { return radius_.download(); }
