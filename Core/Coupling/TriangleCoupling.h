@@ -12,6 +12,19 @@ namespace soak {
 // a..c: the triangle's previous and predicted vertices. Returns the
 // displacement that satisfies C >= 0 (zero if the constraint holds or the
 // particle does not pass through the triangle's interior).
+// Whether q (in the triangle's plane) lies in triangle (a, b, c), grown by
+// `margin` in barycentric units.
+SOAK_INLINE bool insideTriangle(Vec3 q, Vec3 a, Vec3 b, Vec3 c, float margin) {
+  const Vec3 e0 = b - a, e1 = c - a, e2 = q - a;
+  const float d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
+  const float den = d00 * d11 - d01 * d01;
+  if (den <= 0.f) return false;
+  const float v = (d11 * d20 - d01 * d21) / den;
+  const float w = (d00 * d21 - d01 * d20) / den;
+  const float tol = -margin;
+  return v >= tol && w >= tol && 1.f - v - w >= tol;
+}
+
 SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, Vec3 c0, Vec3 a, Vec3 b, Vec3 c,
                                             float d) {
   const Vec3 zero(0.f, 0.f, 0.f);
@@ -26,23 +39,25 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, V
   const float s1 = sigma * dot(x - a, n);
   const float C = s1 - d;
   if (C >= 0.f) return zero;
-  // Where the particle meets the triangle's plane: the crossing point of its
-  // path when it crossed, else its predicted position.
-  Vec3 q = x;
-  if (s1 < 0.f) {
+  // The constraint applies when the particle passes through the triangle's
+  // interior: where its path meets the plane, or where its predicted
+  // position projects onto the plane (the cloth moves too, and can sweep
+  // through a particle that hardly moved). A point some depth beyond a
+  // crease between two triangles projects along each one's normal into
+  // neither of them (the gap grows with the depth times the crease angle),
+  // so each triangle is grown by a margin proportional to that depth; a
+  // small fixed margin catches paths through a shared edge.
+  const float depth = fmaxf(-s1, 0.f);
+  const float margin = 1e-3f + 0.5f * depth / sqrtf(area2);
+  bool inside = insideTriangle(x - n * dot(x - a, n), a, b, c, margin);
+  if (!inside && s1 < 0.f) {
     const float sA = sigma * dot(x0 - a, n);
-    if (sA > 0.f) q = x0 + (x - x0) * (sA / (sA - s1));
+    if (sA > 0.f) {
+      const Vec3 q = x0 + (x - x0) * (sA / (sA - s1));
+      inside = insideTriangle(q - n * dot(q - a, n), a, b, c, margin);
+    }
   }
-  q = q - n * dot(q - a, n);
-  // Barycentric coordinates of q in (a, b, c).
-  const Vec3 e0 = b - a, e1 = c - a, e2 = q - a;
-  const float d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
-  const float den = d00 * d11 - d01 * d01;
-  if (den <= 0.f) return zero;
-  const float v = (d11 * d20 - d01 * d21) / den;
-  const float w = (d00 * d21 - d01 * d20) / den;
-  const float tol = -1e-3f;
-  if (v < tol || w < tol || 1.f - v - w < tol) return zero;
+  if (!inside) return zero;
   return n * (sigma * -C);
 }
 
