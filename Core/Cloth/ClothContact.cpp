@@ -1,6 +1,7 @@
 #include "Cloth/ClothContact.h"
 
 #include "Backend/ForEach.h"
+#include "Coupling/TriangleCoupling.h"
 
 namespace soak {
 
@@ -47,6 +48,57 @@ void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec
       }
     }, "cloth.contact.apply");
   }
+}
+
+namespace {
+SOAK_INLINE bool touchesOneRing(const ClothView& c, int v, const ClothTriangle& t) {
+  for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
+    const ClothTriangle r = c.triangles[c.vertexTriangles[k]];
+    for (int a = 0; a < 3; ++a)
+      if (r.v[a] == t.v[0] || r.v[a] == t.v[1] || r.v[a] == t.v[2]) return true;
+  }
+  return false;
+}
+}  // namespace
+
+void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta) {
+  if (c.triangleCount == 0) return;
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    delta[i] = Vec3(0.f, 0.f, 0.f);
+    const Float4 xi4 = p.predicted[i];
+    if (!isCloth(p.phase[i]) || xi4.w == 0.f) return;
+    const int vi = p.id[i];
+    const Vec3 x0 = p.position[i].xyz(), resti = c.restPosition[vi];
+    const float dist = 0.5f * c.thickness[vi];
+    Vec3 x = xi4.xyz();
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      if (j == i || !isCloth(p.phase[j])) return;
+      const int v = p.id[j];
+      for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
+        const ClothTriangle t = c.triangles[c.vertexTriangles[k]];
+        if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) continue;
+        const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
+        // The same side test as water (Eq. 21); the vertex takes the whole correction.
+        const Vec3 corr = triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(),
+                                                     p.position[sc].xyz(), p.predicted[sa].xyz(),
+                                                     p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist);
+        if (corr.x == 0.f && corr.y == 0.f && corr.z == 0.f) continue;
+        // A triangle that shares a vertex with one of the vertex's own
+        // triangles is its own surface, not another layer (checked only
+        // here, where a correction is due).
+        if (p.phase[j] == p.phase[i] && touchesOneRing(c, vi, t)) continue;
+        x += corr;
+      }
+    });
+    delta[i] = x - xi4.xyz();
+  }, "cloth.vertexTriangle");
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    const Vec3 dx = delta[i];
+    if (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f) {
+      const Float4 x = p.predicted[i];
+      p.predicted[i] = Float4(x.xyz() + dx, x.w);
+    }
+  }, "cloth.vertexTriangle.apply");
 }
 
 }  // namespace soak

@@ -1,7 +1,8 @@
 #pragma once
 // Cloth-cloth and cloth self-collision: cloth particles closer than the
 // cloth thickness are pushed apart, except pairs that are that close in the
-// rest shape (mesh neighbours of the same cloth).
+// rest shape (mesh neighbours of the same cloth); and vertex-triangle
+// contact, which keeps a vertex from slipping through another layer.
 #include "Cloth/ClothSystem.h"
 #include "Neighbours/GridView.h"
 
@@ -9,5 +10,12 @@ namespace soak {
 
 // `passes` Jacobi passes; `delta` is scratch of particle count.
 void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta, int passes);
+
+// A cloth vertex that would cross a triangle of another layer (another
+// cloth, or a part of its own cloth that shares no vertex with its own
+// triangles) between its start-of-step and predicted positions is put back on
+// the side it came from, thickness / 2 away. Particle contact alone lets a
+// vertex slip between the other layer's vertices when a fold flattens.
+void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta);
 
 }  // namespace soak

@@ -60,6 +60,7 @@ void Simulation::addCoreStages() {
                      projectColliders(s.device(), p, s.deviceColliders(), int(s.colliders.size()),
                                       kCollisionRadiusScale, float(s.settings.timeStep));
                      resolveClothContacts(s.device(), p, s.grid.view(), c, s.contactDelta_.data(), s.contactPasses);
+                     resolveVertexTriangleContacts(s.device(), p, s.grid.view(), c, s.contactDelta_.data());
                    }});
   pipeline.append({"collide", [](Simulation& s) {
                      projectColliders(s.device(), s.particles.view(), s.deviceColliders(),

@@ -150,11 +150,7 @@ TEST(Coupling, WaterDroppedOnPinnedSheetNeverCrossesIt) {
   EXPECT_LT(lowestWet, lowestDry - 0.01f);  // the water's weight makes it sag
 }
 
-// DISABLED: the layers land apart (2 cm gap at step 15) but the flattening
-// fold later pushes upper vertices through the lower layer; particle-based
-// contact lets a vertex slip between the lower layer's vertices. Issue 3
-// stays open on it (needs vertex-triangle contact).
-TEST(Cloth, DISABLED_FoldedSheetFallingOnTheFloorDoesNotPassThroughItself) {
+TEST(Cloth, FoldedSheetFallingOnTheFloorDoesNotPassThroughItself) {
   // A sheet folded in two (layers 3 cm apart) dropped on the floor: every
   // vertex of the upper layer stays above its partner of the lower layer.
   const int n = 16;
@@ -197,7 +193,7 @@ TEST(Cloth, DISABLED_FoldedSheetFallingOnTheFloorDoesNotPassThroughItself) {
       }
   }
   std::printf("folded sheet: smallest upper-minus-lower layer height %.4f m\n", worst);
-  EXPECT_GT(worst, 0.f);
+  EXPECT_GT(worst, 0.005f);  // half the contact distance (thickness / 2 = 9.4 mm here)
 }
 
 TEST(Coupling, JetOnHangingSheetRuns1000StepsWithoutNaN) {
