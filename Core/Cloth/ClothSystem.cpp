@@ -152,6 +152,8 @@ ClothView ClothSystem::view() {
   v.restPosition = dRest_.data();
   v.attachCollider = dAttach_.data();
   v.thickness = dThickness_.data();
+  v.maxEdgeLength = maxEdgeLength_;
+  v.maxThickness = maxThickness_;
   v.tetherPin = dTetherPin_.data();
   v.tetherLength = dTetherLength_.data();
   v.vertexSlot = dSlot_.data();

@@ -48,6 +48,8 @@ struct ClothView {
   const int* tetherPin = nullptr;
   const float* tetherLength = nullptr;
   int vertexCount = 0, edgeCount = 0, bendCount = 0, triangleCount = 0;
+  float maxEdgeLength = 0.f;  // longest rest edge of any cloth (bounds a triangle's reach from its vertices)
+  float maxThickness = 0.f;   // largest thickness of any cloth
 };
 
 // How one cloth object is made (host side, from a <Cloth> element).

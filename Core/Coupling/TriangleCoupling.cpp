@@ -13,8 +13,9 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
       const Vec3 x0 = p.position[i].xyz();
       Vec3 x = p.predicted[i].xyz();
       bool moved = false;
+      const float reach2 = triangleReachSquared(x0, x, c.maxEdgeLength, 0.5f * c.maxThickness);
       auto testTrianglesOf = [&](int j) {
-        if (!isCloth(p.phase[j])) return;
+        if (!isCloth(p.phase[j]) || lengthSquared(p.predicted[j].xyz() - x) > reach2) return;
         const int v = p.id[j];
         for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
           const ClothTriangle t = c.triangles[c.vertexTriangles[k]];

@@ -61,6 +61,15 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, V
   return n * (sigma * -C);
 }
 
+// Squared distance within which a triangle vertex must lie for the triangle
+// to matter to a point that moved from x0 to x: a triangle that x projects
+// into (with the margin above) or that the path x0 -> x crosses has every
+// vertex within 1.5 edges + d + |x - x0| of x.
+SOAK_INLINE float triangleReachSquared(Vec3 x0, Vec3 x, float maxEdgeLength, float d) {
+  const float r = 1.5f * maxEdgeLength + d + length(x - x0);
+  return r * r;
+}
+
 // One pass of Eq. 21 over all water particles against the triangles of the
 // cloth particles around them. `vertexStiffness` (per cloth vertex, may be
 // null for 1) gives kappa_couple of a triangle as the mean of its vertices
