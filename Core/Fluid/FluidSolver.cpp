@@ -4,6 +4,7 @@
 
 #include "Backend/ForEach.h"
 #include "Backend/Primitives.h"
+#include "Cloth/ClothVolume.h"
 #include "Fluid/SphKernels.h"
 #include "Physics/Integrate.h"
 #include "Simulation/Simulation.h"
@@ -60,23 +61,7 @@ void FluidSolver::resize(int n) {
 void FluidSolver::computeBoundaryVolumes(Simulation& sim) {
   ParticleView p = sim.particles.view();
   resize(p.count);
-  GridView g = sim.grid.view();
-  float* volume = volume_.data();
-  forEach(device_, p.count, SOAK_LAMBDA(int i) {
-    const int phase = p.phase[i];
-    if (!isCloth(phase)) {
-      volume[i] = 0.f;
-      return;
-    }
-    const Vec3 xi = p.predicted[i].xyz();
-    const float hi = p.radius[i];
-    float sum = 0.f;
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
-      if (p.phase[j] != phase) return;
-      sum += poly6(lengthSquared(xi - p.predicted[j].xyz()), pairSupport(hi, p.radius[j]));
-    });
-    volume[i] = sum > 0.f ? 1.f / sum : 0.f;
-  }, "fluid.volume");
+  computeClothVolumes(device_, p, sim.grid.view(), volume_.data());
 }
 
 namespace {

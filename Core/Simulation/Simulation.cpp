@@ -13,7 +13,7 @@ namespace soak {
 
 Simulation::Simulation(Device device)
     : particles(device), grid(device), cloth(device), fluid(device), device_(device), contactDelta_(device),
-      removeFlag_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
+      removeFlag_(device), removedMass_(device), removedCount_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
 Simulation::~Simulation() = default;
 
@@ -83,7 +83,9 @@ void Simulation::drainWater() {
   if (p.count == 0) return;
   removeFlag_.resize(p.count);
   removedMass_.resize(p.count);
+  removedCount_.resize(p.count);
   int* flag = removeFlag_.data();
+  float* removedCount = removedCount_.data();
   float* removed = removedMass_.data();
   const Vec3 lo = settings.domainMin, hi = settings.domainMax;
   const Vec3* sinkBox = sinkBuffer_.data();
@@ -91,7 +93,13 @@ void Simulation::drainWater() {
   forEach(device_, p.count, SOAK_LAMBDA(int i) {
     flag[i] = 0;
     removed[i] = 0.f;
+    removedCount[i] = 0.f;
     if (!isWater(p.phase[i])) return;
+    if (p.mass[i] <= 0.f) {  // wholly absorbed by cloth last step (its mass is held there now)
+      flag[i] = 1;
+      removedCount[i] = 1.f;
+      return;
+    }
     const Vec3 x = p.position[i].xyz();
     bool out = !(x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z);
     for (int k = 0; k < sinkCount && !out; ++k) {
@@ -101,13 +109,12 @@ void Simulation::drainWater() {
     if (out) {
       flag[i] = 1;
       removed[i] = p.mass[i];
+      removedCount[i] = 1.f;
     }
   }, "drain.flag");
-  const double mass = reduceSum(device_, removed, p.count);
-  if (mass > 0.0) {
-    drainedWaterMass += mass;
-    particles.removeFlagged(flag);
-  }
+  if (reduceSum(device_, removedCount, p.count) == 0.0) return;
+  drainedWaterMass += reduceSum(device_, removed, p.count);
+  particles.removeFlagged(flag);
 }
 
 void Simulation::step(bool profile) {

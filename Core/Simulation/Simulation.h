@@ -82,7 +82,7 @@ class Simulation {
   Device device_;
   Buffer<Vec3> contactDelta_;
   Buffer<int> removeFlag_;
-  Buffer<float> removedMass_;
+  Buffer<float> removedMass_, removedCount_;
   Buffer<Vec3> sinkBuffer_;
   std::vector<std::unique_ptr<Module>> modules_;
   Buffer<Collider> colliderBuffer_;

@@ -1,0 +1,26 @@
+#include "Cloth/ClothVolume.h"
+
+#include "Backend/ForEach.h"
+#include "Fluid/SphKernels.h"
+
+namespace soak {
+
+void computeClothVolumes(Device d, ParticleView p, GridView g, float* volume) {
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    const int phase = p.phase[i];
+    if (!isCloth(phase)) {
+      volume[i] = 0.f;
+      return;
+    }
+    const Vec3 xi = p.predicted[i].xyz();
+    const float hi = p.radius[i];
+    float sum = 0.f;
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      if (p.phase[j] != phase) return;
+      sum += poly6(lengthSquared(xi - p.predicted[j].xyz()), pairSupport(hi, p.radius[j]));
+    });
+    volume[i] = sum > 0.f ? 1.f / sum : 0.f;
+  }, "cloth.volume");
+}
+
+}  // namespace soak
