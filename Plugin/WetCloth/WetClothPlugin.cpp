@@ -1,0 +1,271 @@
+// The WetCloth plugin: <WetCloth .../> switches the paper's wetting model
+// (Section 4) on for every cloth in the scene. It declares its parameters
+// (Table 1 defaults), inserts its stages at the places of Algorithm 1 and
+// adds its columns to stats.csv.
+#include <cmath>
+
+#include "Backend/Primitives.h"
+#include "Base/Error.h"
+#include "Pipeline/Pipeline.h"
+#include "Plugins/PluginApi.h"
+#include "Simulation/Simulation.h"
+#include "WetPhysics.h"
+
+namespace soak::wet {
+namespace {
+
+class WetClothModule : public Module {
+ public:
+  WetClothModule(const WetParams& params, std::string where)
+      : w_(params), where_(std::move(where)) {}
+
+  void setup(Simulation& sim) override {
+    if (sim.cloth.empty()) throw InputError("<WetCloth>: the scene has no <Cloth> to wet", where_);
+    if (!(w_.sEW < w_.sMax)) throw InputError("<WetCloth>: sEW must be below sMax", where_);
+    if (!(w_.sT < w_.sMax)) throw InputError("<WetCloth>: sT must be below sMax", where_);
+    ParticleState& ps = sim.particles;
+    held_ = ps.addChannel("held_water");
+    buffer_ = ps.addChannel("buffer");
+    saturation_ = ps.addChannel("saturation");
+    volume_ = ps.addChannel("volume");
+    // Dry mass and kappa_couple per cloth vertex (the id of a cloth particle is its vertex).
+    const int vertices = sim.cloth.vertexCount();
+    std::vector<float> dry(std::size_t(vertices), 0.f);
+    const std::vector<float> mass = ps.downloadMasses();
+    const std::vector<int> phase = ps.downloadPhases(), id = ps.downloadIds();
+    for (std::size_t i = 0; i < mass.size(); ++i)
+      if (isCloth(phase[i])) dry[std::size_t(id[i])] = mass[i];
+    dryMass_ = Buffer<float>(sim.device());
+    dryMass_.upload(dry);
+    kappa_ = Buffer<float>(sim.device());
+    kappa_.upload(std::vector<float>(std::size_t(vertices), 1.f));
+    sim.couplingStiffness = kappa_.data();
+    ref_.mass = sim.water.particleMass;
+    ref_.supportRadius = sim.water.supportRadius;
+    ref_.gravity = length(sim.settings.gravity);
+    ref_.gravityDir = ref_.gravity > 0.f ? sim.settings.gravity / ref_.gravity : Vec3(0.f, -1.f, 0.f);
+    // Held water given in the scene (<WetCloth initialSaturation=...>): set
+    // once the volumes are known, at the first porosity update.
+  }
+
+  void addStages(Pipeline& pipeline, Simulation&) override {
+    // Algorithm 1: after the cloth solve, volume and saturation; the core's
+    // coupling stage then reads kappa_couple; then absorb, diffuse, emit, stick.
+    pipeline.insertBefore("coupling", {"wet.volume", [this](Simulation& s) { porosity(s); }});
+    pipeline.insertAfter("coupling", {"wet.absorb", [this](Simulation& s) { absorb(s); }});
+    pipeline.insertAfter("wet.absorb", {"wet.diffuse", [this](Simulation& s) { diffuse(s); }});
+    pipeline.insertAfter("wet.diffuse", {"wet.emit", [this](Simulation& s) { emit(s); }});
+    pipeline.insertAfter("wet.emit", {"wet.stick", [this](Simulation& s) { stick(s); }});
+  }
+
+  void beforeStep(Simulation& sim) override {
+    // Drips decided in the last step's wet.emit join the water here, before
+    // the grid is built (as the nozzle's particles do).
+    if (pendingDrips_.empty()) return;
+    sim.particles.append(pendingDrips_);
+    pendingDrips_.clear();
+    pendingDripMass_ = 0.0;
+  }
+
+  void addStats(Simulation& sim, StatsRow& row) override {
+    const int n = sim.particles.count();
+    const double held = reduceSum(sim.device(), sim.particles.channel(held_), n);
+    const double buffered = reduceSum(sim.device(), sim.particles.channel(buffer_), n) + pendingDripMass_;
+    const double free = row.get("free_water_mass");
+    row.add("held_water_mass", held);
+    row.add("buffered_water_mass", buffered);
+    row.add("total_water_mass", free + held + buffered + sim.drainedWaterMass);
+    row.add("max_saturation", n > 0 ? std::max(0.f, reduceMax(sim.device(), sim.particles.channel(saturation_), n)) : 0.0);
+    row.add("drips_spawned", double(dripsSpawned_));
+  }
+
+ private:
+  WetArrays arrays(Simulation& sim) {
+    ParticleState& ps = sim.particles;
+    const std::size_t n = std::size_t(ps.count());
+    for (Buffer<float>* b : {&scratchA_, &scratchB_, &scratchC_}) {
+      if (b->device() != sim.device()) *b = Buffer<float>(sim.device());
+      b->resize(n);
+    }
+    if (delta_.device() != sim.device()) delta_ = Buffer<Vec3>(sim.device());
+    if (spawn_.device() != sim.device()) spawn_ = Buffer<int>(sim.device());
+    delta_.resize(n);
+    spawn_.resize(n);
+    WetArrays a;
+    a.held = ps.channel(held_);
+    a.buffer = ps.channel(buffer_);
+    a.saturation = ps.channel(saturation_);
+    a.volume = ps.channel(volume_);
+    a.scratchA = scratchA_.data();
+    a.scratchB = scratchB_.data();
+    a.scratchC = scratchC_.data();
+    a.delta = delta_.data();
+    a.kappaCouple = kappa_.data();
+    a.dryMass = dryMass_.data();
+    return a;
+  }
+
+  void porosity(Simulation& s) {
+    if (!initialised_) {
+      initialised_ = true;
+      if (initialSaturation_ > 0.f) setInitialSaturation(s);
+    }
+    updatePorosity(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_);
+  }
+  void absorb(Simulation& s) { absorbWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_); }
+  void diffuse(Simulation& s) { diffuseWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_); }
+  void emit(Simulation& s) {
+    if (!w_.emission) return;
+    WetArrays a = arrays(s);
+    ParticleView p = s.particles.view();
+    transferBuffers(s.device(), p, s.grid.view(), a, w_, ref_);
+    const int drips = takeDripMass(s.device(), p, a, w_, spawn_.data());
+    if (drips > 0) queueDrips(s);
+    attractDrips(s.device(), p, s.grid.view(), a, w_, ref_, float(s.settings.timeStep));
+  }
+  void stick(Simulation& s) {
+    if (!w_.sticking) return;
+    stickWetCloth(s.device(), s.particles.view(), s.grid.view(), s.cloth.view(), arrays(s), w_,
+                  float(s.settings.timeStep));
+  }
+
+  // A drip of mass m_threshold and radius (m_p / m0)^(1/3) h0 (Section 4.4)
+  // starts below its cloth particle, a drip spacing plus half the cloth
+  // thickness away, so that it does not overlap the water already there
+  // (the role of Lin's placement in the paper), with the particle's velocity.
+  void queueDrips(Simulation& s) {
+    const std::vector<int> spawn = spawn_.download();
+    const std::vector<Float4> x = s.particles.downloadPredicted();
+    const std::vector<Vec3> v = s.particles.downloadVelocities();
+    const std::vector<int> id = s.particles.downloadIds();
+    const float scale = std::cbrt(w_.mThreshold / ref_.mass);
+    const float offset = 0.5f * s.cloth.maxThickness() + 0.5f * s.water.spacing * scale;
+    for (std::size_t i = 0; i < spawn.size(); ++i) {
+      if (!spawn[i]) continue;
+      ParticleInit q;
+      q.position = x[i].xyz() + ref_.gravityDir * offset;
+      q.velocity = v[i];
+      q.mass = w_.mThreshold;
+      q.radius = ref_.supportRadius * scale;
+      q.phase = kPhaseWater;
+      q.id = s.nextWaterId++;
+      pendingDrips_.push_back(q);
+      pendingDripMass_ += double(w_.mThreshold);
+      ++dripsSpawned_;
+    }
+  }
+
+  // Every cloth particle starts holding S V / c of water (for scenes that
+  // begin wet, such as Figure 6).
+  void setInitialSaturation(Simulation& s) {
+    ParticleView p = s.particles.view();
+    WetArrays a = arrays(s);
+    updatePorosity(s.device(), p, s.grid.view(), a, w_);  // volumes
+    std::vector<float> volume = s.particles.downloadChannel(volume_);
+    const std::vector<int> phase = s.particles.downloadPhases();
+    std::vector<float> held(volume.size(), 0.f);
+    for (std::size_t i = 0; i < held.size(); ++i)
+      if (isCloth(phase[i])) held[i] = initialSaturation_ * volume[i] / w_.c;
+    Buffer<float> tmp(s.device());
+    tmp.upload(held);
+    copyDeviceToDevice(s.device(), a.held, tmp.data(), held.size() * sizeof(float));
+  }
+
+ public:
+  float initialSaturation_ = 0.f;
+
+ private:
+  WetParams w_;
+  std::string where_;
+  WaterReference ref_;
+  int held_ = -1, buffer_ = -1, saturation_ = -1, volume_ = -1;
+  Buffer<float> dryMass_, kappa_, scratchA_, scratchB_, scratchC_;
+  Buffer<Vec3> delta_;
+  Buffer<int> spawn_;
+  std::vector<ParticleInit> pendingDrips_;
+  double pendingDripMass_ = 0.0;
+  long long dripsSpawned_ = 0;
+  bool initialised_ = false;
+};
+
+WetParams paramsFrom(const ElementParams& e) {
+  WetParams w;
+  w.sMax = e.realf("sMax");
+  w.sEW = e.realf("sEW");
+  w.sT = e.given("sT") ? e.realf("sT") : 0.3f * w.sMax;
+  w.c = e.realf("c");
+  w.kappaA = e.realf("absorptionRate");
+  w.etaA = e.realf("absorptionGravity");
+  w.kappaD = e.realf("diffusionRate");
+  w.etaD = e.realf("diffusionGravity");
+  w.kappaS = e.realf("smoothingRate");
+  w.epsilon = e.realf("diffusionRelaxation");
+  w.diffusionIterations = int(e.integer("diffusionIterations"));
+  w.form = e.text("diffusionForm") == "literal" ? DiffusionForm::Literal : DiffusionForm::Conservative;
+  w.beta = e.realf("emissionBeta");
+  w.mThreshold = e.realf("dripMass");
+  w.kappaE = e.realf("dripAttraction");
+  w.etaE = e.realf("dripSaturationWeight");
+  w.kappaAd = e.realf("stickiness");
+  w.etaAd = e.realf("stickinessOffset");
+  w.clothRestDensity = e.realf("clothRestDensity");
+  w.emission = e.boolean("emission");
+  w.sticking = e.boolean("sticking");
+  w.wetWeight = e.boolean("wetWeight");
+  return w;
+}
+
+}  // namespace
+}  // namespace soak::wet
+
+SOAK_PLUGIN(WetCloth) {
+  using soak::ElementDecl;
+  registry.add(
+      ElementDecl("WetCloth",
+                  "The paper's wetting model (Section 4) for every cloth in the scene: absorption (Eq. 11), "
+                  "diffusion (Eq. 12-17), emission and drips (Eq. 18-19), wet sticking (Eq. 20) and coupling "
+                  "stiffness that falls with saturation (Eq. 22). Defaults are Table 1's.",
+                  "Plugins")
+          .real("sMax", "", "0.4", "S^MAX, the most water a cloth particle holds (Eq. 10).", 0.0, 1.0, true)
+          .real("sEW", "", "0.35", "S^EW: above it water goes to the emission buffer (Section 4.4).", 0.0, 1.0, true)
+          .real("sT", "", "0.12", "S^T (default 0.3 sMax): wet sticking peaks here, coupling softens above it.", 0.0,
+                1.0, true)
+          .real("c", "m^3/kg", "0.001",
+                "Eq. 10's c in S = c m_water / V (the paper gives no value; 1/rho_water makes S the volume "
+                "fraction of water).",
+                0.0, 1.0, true)
+          .real("absorptionRate", "", "0.1", "kappa^a of Eq. 11.", 0.0, 1.0)
+          .real("absorptionGravity", "", "0.4",
+                "eta^a of Eq. 11 (Table 1 prints eta^d twice; we read 0.4 as eta^a).", 0.0, 1.0)
+          .real("diffusionRate", "", "0.5", "kappa^d of Eq. 12.", 0.0, 1e3)
+          .real("diffusionGravity", "", "0.6", "eta^d of Eq. 12.", 0.0, 1.0)
+          .real("smoothingRate", "", "0.8", "kappa^s of Eq. 17.", 0.0, 1.0)
+          .real("diffusionRelaxation", "", "0.1", "epsilon of Eq. 15, relative to (sum_j a_ij)^2.", 0.0, 1e6)
+          .integer("diffusionIterations", "1", "Saturation-constraint iterations per step.", 0, 1000)
+          .choice("diffusionForm", {"conservative", "literal"}, "conservative",
+                  "conservative: pairwise exchange that conserves water and reduces to Eq. 17 per receiver; "
+                  "literal: Eq. 17 as printed (does not conserve water).")
+          .real("emissionBeta", "1/s^2", "1", "beta of Eq. 18 (no value in the paper).", 0.0, 1e6)
+          .real("dripMass", "kg", "0.002", "m^threshold: buffer mass that becomes a drip (Table 1).", 0.0, 1.0, true)
+          .real("dripAttraction", "m/s^2", "10", "kappa^e of Eq. 19 (Table 1).", 0.0, 1e6)
+          .real("dripSaturationWeight", "kg", "0.02", "eta^e of Eq. 19 (no value in the paper).", 0.0, 1e3)
+          .real("stickiness", "N", "0.3", "kappa^ad of Eq. 20 (Table 1).", 0.0, 1e6)
+          .real("stickinessOffset", "N", "-1",
+                "eta^ad of Eq. 20 (no value in the paper); negative: stickiness x sT^2, so dry cloth does not "
+                "stick.",
+                -1.0, 1e6)
+          .real("clothRestDensity", "kg/m^3", "800", "Cloth rest density (Table 1), for Psi of Eq. 19.", 0.0, 1e5,
+                true)
+          .real("initialSaturation", "", "0", "Saturation every cloth particle starts with.", 0.0, 1.0)
+          .boolean("emission", "true", "Buffers, drips and drip attraction (Section 4.4).")
+          .boolean("sticking", "true", "Wet cloth sticking (Eq. 20).")
+          .boolean("wetWeight", "true", "Held and buffered water add to the cloth particle's mass.")
+          .makeUnique()
+          .create([](const soak::ElementParams& e) {
+            auto m = std::make_unique<soak::wet::WetClothModule>(soak::wet::paramsFrom(e), e.where());
+            m->initialSaturation_ = e.realf("initialSaturation");
+            if (m->initialSaturation_ > e.realf("sMax"))
+              throw soak::InputError("<WetCloth>: initialSaturation must not exceed sMax", e.where());
+            return m;
+          }));
+}

@@ -1,0 +1,376 @@
+#include "WetPhysics.h"
+
+#include <cmath>
+
+#include "Backend/ForEach.h"
+#include "Backend/Primitives.h"
+#include "Cloth/ClothVolume.h"
+#include "WetKernels.h"
+
+namespace soak::wet {
+
+namespace {
+
+// Eq. 11's per-pair factor 1 + eta^a cos(theta_ij), x_ij = x_cloth - x_water,
+// or 0 when the pair is out of reach. Every pass that needs a pair's share
+// calls this with the same arguments, so all passes see the same bits and
+// the water a cloth particle gains is exactly what the water particle loses.
+SOAK_INLINE float absorptionFactor(Vec3 xCloth, float hCloth, Vec3 xWater, float hWater, float etaA, Vec3 g) {
+  const Vec3 xij = xCloth - xWater;
+  const float r2 = lengthSquared(xij);
+  const float h = pairSupport(hCloth, hWater);
+  if (r2 >= h * h) return 0.f;
+  return gravityTerm(etaA, cosToGravity(xij, sqrtf(r2), g));
+}
+
+// Eq. 12's a_ij = kappa^d (1 + eta^d cos theta_ij) lap W_ij / rho0 for
+// receiver i and neighbour j (0 out of reach).
+SOAK_INLINE float diffusionWeight(Vec3 xi, float hi, Vec3 xj, float hj, float kD, float etaD, float rho0, Vec3 g) {
+  const Vec3 xij = xi - xj;
+  const float r2 = lengthSquared(xij);
+  const float h = pairSupport(hi, hj);
+  if (r2 >= h * h || r2 == 0.f) return 0.f;
+  const float r = sqrtf(r2);
+  return kD * gravityTerm(etaD, cosToGravity(xij, r, g)) * laplacianWeight(r, h) / rho0;
+}
+
+// Water mass that flows into the drier receiver r from the wetter donor d in
+// one iteration: the receiver's own term of Eq. 17, alpha_r a_rd (S_d - S_r),
+// as mass. Both particles evaluate it with the same arguments.
+SOAK_INLINE float diffusionFlux(Vec3 xr, float hr, float Sr, float alphaR, float Vr, Vec3 xd, float hd, float Sd,
+                                float kD, float etaD, float rho0, Vec3 g, float c) {
+  return alphaR * diffusionWeight(xr, hr, xd, hd, kD, etaD, rho0, g) * (Sd - Sr) * Vr / c;
+}
+
+// Eq. 18's weight cos(theta_ki) W_ki of receiver k below donor i (0 unless k
+// lies below i and within reach).
+SOAK_INLINE float transferWeight(Vec3 xk, float hk, Vec3 xi, float hi, Vec3 g) {
+  const Vec3 xki = xk - xi;
+  const float r2 = lengthSquared(xki);
+  const float h = pairSupport(hk, hi);
+  if (r2 >= h * h || r2 == 0.f) return 0.f;
+  const float cosT = cosToGravity(xki, sqrtf(r2), g);
+  return cosT > 0.f ? cosT * poly6(r2, h) : 0.f;
+}
+
+}  // namespace
+
+void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w) {
+  computeClothVolumes(d, p, g, a.volume);
+  const float sEW = w.sEW, c = w.c, sT = w.sT, sMax = w.sMax;
+  const bool wetWeight = w.wetWeight;
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    if (!isCloth(p.phase[i])) return;
+    const float V = a.volume[i];
+    float held = a.held[i];
+    // Water above S^EW is excess (Section 4.4): it leaves the fabric for the buffer.
+    const float limit = sEW * V / c;
+    if (held > limit) {
+      const float excess = held - limit;
+      a.buffer[i] += excess;
+      held -= excess;
+      a.held[i] = held;
+    }
+    const float S = saturationOf(c, held, V);  // Eq. 10
+    a.saturation[i] = S;
+    const int v = p.id[i];
+    a.kappaCouple[v] = couplingStiffnessOf(S, sT, sMax);  // Eq. 22 (per vertex)
+    if (wetWeight) {
+      // Held and buffered water weigh on the cloth particle (the paper's rho0* = (m_i + m_j) / m_i).
+      const float m = a.dryMass[v] + held + a.buffer[i];
+      p.mass[i] = m;
+      if (p.position[i].w > 0.f) {
+        p.position[i].w = 1.f / m;
+        p.predicted[i].w = 1.f / m;
+      }
+    }
+  }, "wet.porosity");
+}
+
+void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref) {
+  const float c = w.c, sMax = w.sMax, kA = w.kappaA, etaA = w.etaA;
+  const float m0 = ref.mass, h0 = ref.supportRadius;
+  const Vec3 gd = ref.gravityDir;
+  float* scale = a.scratchA;
+  float* ratio = a.scratchB;
+  // Cloth: what each cloth particle may take from each water neighbour,
+  // a_ij = kappa^a (1 + eta^a cos theta_ij) (S^MAX - S_i) V_i / c (Eq. 11, in
+  // kg), scaled down if the sum over its neighbours would overfill it.
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    scale[i] = 0.f;
+    if (!isCloth(p.phase[i])) return;
+    const float cap = fmaxf(sMax - saturationOf(c, a.held[i], a.volume[i]), 0.f) * a.volume[i] / c;
+    if (cap <= 0.f) return;
+    const Vec3 xi = p.predicted[i].xyz();
+    const float hi = p.radius[i];
+    float factors = 0.f;
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
+      factors += absorptionFactor(xi, hi, p.predicted[j].xyz(), p.radius[j], etaA, gd);
+    });
+    const float demand = kA * cap * factors;
+    scale[i] = demand > cap ? cap / factors : kA * cap;
+  }, "wet.absorb.demand");
+  // Water: if the cloth around wants more than the particle has, every share shrinks alike.
+  forEach(d, p.count, SOAK_LAMBDA(int j) {
+    ratio[j] = 0.f;
+    if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
+    const Vec3 xj = p.predicted[j].xyz();
+    const float hj = p.radius[j];
+    float asked = 0.f;
+    forEachCandidate(g, g.cellKey[j], [&](int i) {
+      if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
+      asked += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd);
+    });
+    ratio[j] = asked > p.mass[j] ? p.mass[j] / asked : 1.f;
+  }, "wet.absorb.ratio");
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
+    const Vec3 xi = p.predicted[i].xyz();
+    const float hi = p.radius[i];
+    float gained = 0.f;
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
+      gained += scale[i] * absorptionFactor(xi, hi, p.predicted[j].xyz(), p.radius[j], etaA, gd) * ratio[j];
+    });
+    a.held[i] += gained;
+  }, "wet.absorb.cloth");
+  forEach(d, p.count, SOAK_LAMBDA(int j) {
+    if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
+    const Vec3 xj = p.predicted[j].xyz();
+    const float hj = p.radius[j];
+    float given = 0.f;
+    forEachCandidate(g, g.cellKey[j], [&](int i) {
+      if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
+      given += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd) * ratio[j];
+    });
+    if (given <= 0.f) return;
+    const float m = ratio[j] < 1.f ? 0.f : fmaxf(p.mass[j] - given, 0.f);
+    p.mass[j] = m;
+    if (m > 0.f) {
+      // Adaptive sampling (Section 4.2): h' = (m' / m0)^(1/3) h0.
+      p.radius[j] = h0 * cbrtf(m / m0);
+      p.position[j].w = 1.f / m;
+      p.predicted[j].w = 1.f / m;
+    }
+  }, "wet.absorb.water");
+}
+
+void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref) {
+  const float c = w.c, sMax = w.sMax, kD = w.kappaD, etaD = w.etaD, kS = w.kappaS, eps = w.epsilon;
+  const float rho0 = w.clothRestDensity;
+  const bool literal = w.form == DiffusionForm::Literal;
+  const Vec3 gd = ref.gravityDir;
+  float* alpha = a.scratchA;
+  float* limit = a.scratchB;
+  float* next = a.scratchC;
+  float* S = a.saturation;
+  for (int it = 0; it < w.diffusionIterations; ++it) {
+    // alpha_i = kappa^s sum_j a_ij / (sum_j a_ij^2 + (sum_j a_ij)^2 + eps), so
+    // that Eq. 17 reads S_i* = S_i + alpha_i sum_j a_ij (S_j - S_i).
+    forEach(d, p.count, SOAK_LAMBDA(int i) {
+      alpha[i] = 0.f;
+      if (!isCloth(p.phase[i])) return;
+      S[i] = saturationOf(c, a.held[i], a.volume[i]);
+      const Vec3 xi = p.predicted[i].xyz();
+      const float hi = p.radius[i];
+      float sum = 0.f, sum2 = 0.f;
+      forEachCandidate(g, g.cellKey[i], [&](int j) {
+        if (j == i || p.phase[j] != p.phase[i]) return;
+        const float aij = diffusionWeight(xi, hi, p.predicted[j].xyz(), p.radius[j], kD, etaD, rho0, gd);
+        sum += aij;
+        sum2 += aij * aij;
+      });
+      const float den = sum2 + sum * sum * (1.f + eps);
+      alpha[i] = den > 0.f ? kS * sum / den : 0.f;
+    }, "wet.diffuse.alpha");
+    if (literal) {
+      // Eq. 17 as written: each particle moves its own saturation (not conservative).
+      forEach(d, p.count, SOAK_LAMBDA(int i) {
+        if (!isCloth(p.phase[i])) return;
+        const Vec3 xi = p.predicted[i].xyz();
+        const float hi = p.radius[i];
+        float C = 0.f;
+        forEachCandidate(g, g.cellKey[i], [&](int j) {
+          if (j == i || p.phase[j] != p.phase[i]) return;
+          C += diffusionWeight(xi, hi, p.predicted[j].xyz(), p.radius[j], kD, etaD, rho0, gd) * (S[j] - S[i]);
+        });
+        const float Snew = fminf(fmaxf(S[i] + alpha[i] * C, 0.f), sMax);
+        next[i] = Snew * a.volume[i] / c;
+      }, "wet.diffuse.literal");
+    } else {
+      // Conservative form: the pair (receiver r, donor d) exchanges the mass
+      // of the receiver's term of Eq. 17; the donor loses what the receiver
+      // gains. A donor never gives more than it holds.
+      forEach(d, p.count, SOAK_LAMBDA(int i) {
+        limit[i] = 1.f;
+        if (!isCloth(p.phase[i])) return;
+        const Vec3 xi = p.predicted[i].xyz();
+        const float hi = p.radius[i];
+        float out = 0.f;
+        forEachCandidate(g, g.cellKey[i], [&](int j) {
+          if (j == i || p.phase[j] != p.phase[i] || !(S[j] < S[i])) return;
+          out += diffusionFlux(p.predicted[j].xyz(), p.radius[j], S[j], alpha[j], a.volume[j], xi, hi, S[i], kD, etaD,
+                               rho0, gd, c);
+        });
+        limit[i] = out > a.held[i] ? a.held[i] / out : 1.f;
+      }, "wet.diffuse.limit");
+      forEach(d, p.count, SOAK_LAMBDA(int i) {
+        if (!isCloth(p.phase[i])) return;
+        const Vec3 xi = p.predicted[i].xyz();
+        const float hi = p.radius[i];
+        float change = 0.f;
+        forEachCandidate(g, g.cellKey[i], [&](int j) {
+          if (j == i || p.phase[j] != p.phase[i]) return;
+          const Vec3 xj = p.predicted[j].xyz();
+          if (S[j] > S[i])
+            change += diffusionFlux(xi, hi, S[i], alpha[i], a.volume[i], xj, p.radius[j], S[j], kD, etaD, rho0, gd, c) *
+                      limit[j];
+          else if (S[j] < S[i])
+            change -= diffusionFlux(xj, p.radius[j], S[j], alpha[j], a.volume[j], xi, hi, S[i], kD, etaD, rho0, gd, c) *
+                      limit[i];
+        });
+        next[i] = fmaxf(a.held[i] + change, 0.f);
+      }, "wet.diffuse.exchange");
+    }
+    forEach(d, p.count, SOAK_LAMBDA(int i) {
+      if (!isCloth(p.phase[i])) return;
+      a.held[i] = next[i];
+      S[i] = saturationOf(c, next[i], a.volume[i]);
+    }, "wet.diffuse.apply");
+  }
+}
+
+void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref) {
+  const Vec3 gd = ref.gravityDir;
+  const float threshold = w.beta * ref.gravity;
+  float* out = a.scratchA;
+  float* norm = a.scratchB;
+  float* next = a.scratchC;
+  const float* S = a.saturation;
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    out[i] = 0.f;
+    norm[i] = 0.f;
+    if (!isCloth(p.phase[i]) || !(a.buffer[i] > 0.f)) return;
+    const Vec3 xi = p.predicted[i].xyz();
+    const float hi = p.radius[i];
+    // Eq. 18, second condition: |sum_{j above i} V_j S_j cos(theta_ij) grad W_ij| < |beta g|.
+    Vec3 pull(0.f, 0.f, 0.f);
+    float below = 0.f;
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      if (j == i || p.phase[j] != p.phase[i]) return;
+      const Vec3 xj = p.predicted[j].xyz();
+      const Vec3 xij = xi - xj;
+      const float r2 = lengthSquared(xij);
+      const float h = pairSupport(hi, p.radius[j]);
+      if (r2 >= h * h || r2 == 0.f) return;
+      const float r = sqrtf(r2);
+      const float cosT = cosToGravity(xij, r, gd);
+      if (cosT > 0.f) pull += spikyGradient(xij, r, h) * (a.volume[j] * S[j] * cosT);
+      below += transferWeight(xj, p.radius[j], xi, hi, gd);
+    });
+    if (length(pull) < threshold && below > 0.f) {
+      out[i] = a.buffer[i];
+      norm[i] = below;
+    }
+  }, "wet.emit.decide");
+  // Receivers below take cos(theta_ki) W_ki of the buffer, normalised so the
+  // donor's whole buffer arrives (the paper's weights do not sum to one).
+  forEach(d, p.count, SOAK_LAMBDA(int k) {
+    if (!isCloth(p.phase[k])) return;
+    const Vec3 xk = p.predicted[k].xyz();
+    const float hk = p.radius[k];
+    float gain = 0.f;
+    forEachCandidate(g, g.cellKey[k], [&](int i) {
+      if (i == k || p.phase[i] != p.phase[k] || !(out[i] > 0.f)) return;
+      gain += out[i] * transferWeight(xk, hk, p.predicted[i].xyz(), p.radius[i], gd) / norm[i];
+    });
+    next[k] = a.buffer[k] - out[k] + gain;
+  }, "wet.emit.transfer");
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    if (isCloth(p.phase[i])) a.buffer[i] = next[i];
+  }, "wet.emit.apply");
+}
+
+int takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int* spawn) {
+  const float mThr = w.mThreshold;
+  float* count = a.scratchA;
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    spawn[i] = 0;
+    count[i] = 0.f;
+    if (!isCloth(p.phase[i]) || !(a.buffer[i] >= mThr)) return;
+    a.buffer[i] -= mThr;
+    spawn[i] = 1;
+    count[i] = 1.f;
+  }, "wet.emit.drips");
+  return int(reduceSum(d, count, p.count) + 0.5);
+}
+
+void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+                  float dt) {
+  const float kE = w.kappaE, etaE = w.etaE, rho0 = w.clothRestDensity, light = 0.999f * ref.mass;
+  const float* S = a.saturation;
+  forEach(d, p.count, SOAK_LAMBDA(int j) {
+    if (!isWater(p.phase[j]) || !(p.mass[j] > 0.f) || p.mass[j] >= light) return;
+    const Vec3 xj = p.predicted[j].xyz();
+    const float hj = p.radius[j];
+    Vec3 f(0.f, 0.f, 0.f);
+    forEachCandidate(g, g.cellKey[j], [&](int i) {
+      if (!isCloth(p.phase[i])) return;
+      const Vec3 xij = p.predicted[i].xyz() - xj;
+      const float r2 = lengthSquared(xij);
+      const float h = pairSupport(p.radius[i], hj);
+      if (r2 >= h * h || r2 == 0.f) return;
+      const float dry = a.dryMass[p.id[i]];
+      const float psi = rho0 * a.volume[i] / dry;  // Akinci's Psi relative to the particle's own mass
+      // Eq. 19, towards the cloth particle, kernel relative to its peak.
+      f += xij * (kE * (dry + etaE * S[i]) * psi * poly6(r2, h) / poly6(0.f, h) / sqrtf(r2));
+    });
+    // As a position change dt^2 f / m, at most a quarter of the particle's
+    // support per step: a light remnant of partial absorption would
+    // otherwise be flung by a force meant for a drip.
+    Vec3 dx = f * (dt * dt / p.mass[j]);
+    const float most = 0.25f * hj, len = length(dx);
+    if (len > most) dx = dx * (most / len);
+    const Float4 x = p.predicted[j];
+    p.predicted[j] = Float4(x.xyz() + dx, x.w);
+  }, "wet.emit.attract");
+}
+
+void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays a, const WetParams& w, float dt) {
+  const float sT = w.sT, kAd = w.kappaAd, etaAd = w.etaAd >= 0.f ? w.etaAd : w.kappaAd * w.sT * w.sT;
+  const float* S = a.saturation;
+  Vec3* delta = a.delta;
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    delta[i] = Vec3(0.f, 0.f, 0.f);
+    const Float4 xi4 = p.predicted[i];
+    if (!isCloth(p.phase[i]) || xi4.w == 0.f) return;
+    const int vi = p.id[i];
+    const Vec3 xi = xi4.xyz(), resti = c.restPosition[vi];
+    const float thi = c.thickness[vi];
+    Vec3 f(0.f, 0.f, 0.f);
+    forEachCandidate(g, g.cellKey[i], [&](int j) {
+      if (j == i || !isCloth(p.phase[j])) return;
+      const int vj = p.id[j];
+      const float reach = thi + c.thickness[vj];  // touching: within two half-thicknesses each side
+      const Vec3 xij = p.predicted[j].xyz() - xi;
+      const float r2 = lengthSquared(xij);
+      if (r2 >= reach * reach || r2 == 0.f) return;
+      // Particles near each other in the rest shape are the same layer.
+      if (p.phase[j] == p.phase[i] && lengthSquared(c.restPosition[vj] - resti) < 9.f * thi * thi) return;
+      // Eq. 20, towards j, kernel relative to its peak.
+      const float mag = stickingMagnitude(S[i], S[j], sT, kAd, etaAd) * poly6(r2, reach) / poly6(0.f, reach);
+      f += xij * (mag / sqrtf(r2));
+    });
+    delta[i] = f * (dt * dt * xi4.w);
+  }, "wet.stick");
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    const Vec3 dx = delta[i];
+    if (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f) {
+      const Float4 x = p.predicted[i];
+      p.predicted[i] = Float4(x.xyz() + dx, x.w);
+    }
+  }, "wet.stick.apply");
+}
+
+}  // namespace soak::wet
