@@ -74,7 +74,10 @@ void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const Wet
     const float S = saturationOf(c, held, V);  // Eq. 10
     a.saturation[i] = S;
     const int v = p.id[i];
-    a.kappaCouple[v] = couplingStiffnessOf(S, sT, sMax);  // Eq. 22 (per vertex)
+    // Eq. 22 (per vertex), from all the water the particle carries, held and
+    // buffered: cloth with excess water is the wettest (Doc/model.md).
+    const float wetness = fminf(saturationOf(c, held + a.buffer[i], V), sMax);
+    a.kappaCouple[v] = couplingStiffnessOf(wetness, sT, sMax);
     if (wetWeight) {
       // Held and buffered water weigh on the cloth particle (the paper's rho0* = (m_i + m_j) / m_i).
       const float m = a.dryMass[v] + held + a.buffer[i];

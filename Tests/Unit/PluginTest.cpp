@@ -15,7 +15,7 @@ TEST(Plugin, LoadsFromDirectoryAndRegistersElements) {
   EXPECT_EQ(e->provider, "AirDrag");
   // Loading the same file again changes nothing.
   reg.loader.loadFile(std::string(SOAK_PLUGIN_DIR) + "/libsoak_AirDrag.so");
-  EXPECT_EQ(reg.registry.plugins().size(), 1u);
+  EXPECT_EQ(reg.registry.plugins().size(), 2u);  // AirDrag and WetCloth
 }
 
 TEST(Plugin, CoreRunsWithoutPlugins) {
