@@ -345,3 +345,28 @@ TEST(WetCloth, HeldWaterWeighsOnTheCloth) {
   EXPECT_LT(worst, 1e-7);
   EXPECT_GT(heaviest, 0.0055);
 }
+
+TEST(WetCloth, DampClothSticksAndDryClothDoesNot) {
+  // Eq. 20: two sheets 2 cm apart (within reach of each other's thickness),
+  // held at their corners, no gravity to speak of. At S^T they pull
+  // together; dry, Eq. 20 is zero (eta^ad = kappa^ad S^T^2) and they stay apart.
+  auto gapAfter = [](float saturation) {
+    test::TestRegistry reg(SOAK_PLUGIN_DIR);
+    auto sim = wetScene(std::string(kStill) +
+                            "<Cloth name='lower' origin='-0.2 0.5 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
+                            "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015'/>"
+                            "<Cloth name='upper' origin='-0.2 0.52 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
+                            "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015'/>"
+                            "<WetCloth initialSaturation='" +
+                            std::to_string(saturation) + "' emission='false' diffusionIterations='0'/>",
+                        reg);
+    for (int s = 0; s < 40; ++s) sim->step();
+    const std::vector<Vec3> lower = sim->cloth.downloadVertexPositions(sim->particles, 0);
+    const std::vector<Vec3> upper = sim->cloth.downloadVertexPositions(sim->particles, 1);
+    return upper[220].y - lower[220].y;  // the centre vertex (10, 10) of both
+  };
+  const float dry = gapAfter(0.f), damp = gapAfter(0.12f);
+  std::printf("gap between the sheets' centres after 40 steps: dry %.4f m, at S^T %.4f m\n", dry, damp);
+  EXPECT_NEAR(dry, 0.02f, 1e-4f);
+  EXPECT_LT(damp, 0.019f);
+}
