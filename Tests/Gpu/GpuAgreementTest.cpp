@@ -60,8 +60,9 @@ void perturbByOneUlp(Simulation& sim, std::uint32_t seed) {
 
 // Runs `steps` steps on CPU, perturbed CPU and CUDA; prints both distances
 // per step and checks the CUDA one against the CPU's own sensitivity.
-void expectCudaWithinCpuSensitivity(const std::string& name, const std::string& xml, int steps) {
-  test::TestRegistry r1, r2, r3;
+void expectCudaWithinCpuSensitivity(const std::string& name, const std::string& xml, int steps,
+                                    const std::string& plugins = {}) {
+  test::TestRegistry r1(plugins), r2(plugins), r3(plugins);
   auto cpu = test::makeSimulation(xml, Device::Cpu, r1);
   auto pert = test::makeSimulation(xml, Device::Cpu, r2);
   auto gpu = test::makeSimulation(xml, Device::Cuda, r3);
@@ -77,6 +78,12 @@ void expectCudaWithinCpuSensitivity(const std::string& name, const std::string& 
   std::printf("%s, %d particles: max distance to the CPU run, CUDA | CPU after one ulp\n", name.c_str(),
               cpu->particles.count());
   for (int s = 0; s < steps; ++s) std::printf("  step %3d  %10.3g | %10.3g\n", s + 1, dGpu[s], dPert[s]);
+  if (cpu->particles.findChannel("held_water") >= 0) {
+    StatsRow a = cpu->collectStats(), b = gpu->collectStats();
+    for (const char* column : {"held_water_mass", "buffered_water_mass", "free_water_mass", "total_water_mass"})
+      std::printf("  %-20s CPU %.6f  CUDA %.6f\n", column, a.get(column), b.get(column));
+    EXPECT_NEAR(a.get("total_water_mass"), b.get("total_water_mass"), 1e-5 * a.get("total_water_mass"));
+  }
   // Which of two nearly tied decisions goes which way can shift by a step:
   // compare with the perturbed run's largest distance up to one step later.
   // The floor 2e-6 m is a few ulps at 1 m.
@@ -152,6 +159,14 @@ TEST(GpuAgreement, WaterOnClothWithinCpuSensitivity) {
 TEST(GpuAgreement, JetOnClothWithinCpuSensitivity) {
   SOAK_SKIP_WITHOUT_GPU();
   expectCudaWithinCpuSensitivity("jet on a hanging sheet", kJet, 12);
+}
+
+TEST(GpuAgreement, WettingWaterOnClothWithinCpuSensitivity) {
+  // The wetting stages (absorb, diffuse, emit, stick, Eq. 22) from the first step.
+  SOAK_SKIP_WITHOUT_GPU();
+  std::string xml = kWaterOnCloth;
+  xml.replace(xml.find("</Scene>"), 8, "<WetCloth/></Scene>");
+  expectCudaWithinCpuSensitivity("water block on a pinned sheet, wetting", xml, 40, defaultPluginDirectory());
 }
 
 TEST(GpuAgreement, EveryStageAgreesBeforeImpact) {
