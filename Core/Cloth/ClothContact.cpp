@@ -71,9 +71,9 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
     const Vec3 x0 = p.position[i].xyz(), resti = c.restPosition[vi];
     const float dist = 0.5f * c.thickness[vi];
     Vec3 x = xi4.xyz();
-    const float reach2 = triangleReachSquared(x0, x, c.maxEdgeLength, dist);
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
-      if (j == i || !isCloth(p.phase[j]) || lengthSquared(p.predicted[j].xyz() - x) > reach2) return;
+    const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
+    forEachClothNearPath(g, p, x0, x, reach, [&](int j) {
+      if (j == i) return;
       const int v = p.id[j];
       for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
         const ClothTriangle t = c.triangles[c.vertexTriangles[k]];

@@ -13,9 +13,8 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
       const Vec3 x0 = p.position[i].xyz();
       Vec3 x = p.predicted[i].xyz();
       bool moved = false;
-      const float reach2 = triangleReachSquared(x0, x, c.maxEdgeLength, 0.5f * c.maxThickness);
+      const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
       auto testTrianglesOf = [&](int j) {
-        if (!isCloth(p.phase[j]) || lengthSquared(p.predicted[j].xyz() - x) > reach2) return;
         const int v = p.id[j];
         for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
           const ClothTriangle t = c.triangles[c.vertexTriangles[k]];
@@ -34,14 +33,10 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
           moved = true;
         }
       };
-      forEachCandidate(g, g.cellKey[i], testTrianglesOf);
-      // A fast particle (a falling block lands at 3 m/s, 4.5 cm a step, more
-      // than a cell) can cross cloth that lies around where it started and
-      // more than a cell from where it was predicted to go: search there too.
-      const std::uint32_t startKey = cellKeyOf(x0, g.invCellSize);
-      if (startKey != g.cellKey[i]) forEachCandidate(g, startKey, testTrianglesOf);
-      const std::uint32_t midKey = cellKeyOf((x0 + x) * 0.5f, g.invCellSize);
-      if (midKey != g.cellKey[i] && midKey != startKey) forEachCandidate(g, midKey, testTrianglesOf);
+      // Every cell the path and the triangles around it can touch: a fast
+      // particle (a falling block lands at 3 m/s, 4.5 cm a step, more than a
+      // cell) can cross cloth that lies around where it started.
+      forEachClothNearPath(g, p, x0, x, reach, testTrianglesOf);
       if (moved) p.predicted[i] = Float4(x, p.predicted[i].w);
     }, "coupling.triangles");
   }

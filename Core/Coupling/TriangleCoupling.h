@@ -61,13 +61,31 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, V
   return n * (sigma * -C);
 }
 
-// Squared distance within which a triangle vertex must lie for the triangle
-// to matter to a point that moved from x0 to x: a triangle that x projects
-// into (with the margin above) or that the path x0 -> x crosses has every
-// vertex within 1.5 edges + d + |x - x0| of x.
-SOAK_INLINE float triangleReachSquared(Vec3 x0, Vec3 x, float maxEdgeLength, float d) {
-  const float r = 1.5f * maxEdgeLength + d + length(x - x0);
-  return r * r;
+// Distance from a point of the path x0 -> x within which every vertex of a
+// triangle that matters to the particle lies: a triangle that x projects
+// into (with the margin above), or that the path crosses, has its vertices
+// within 1.5 edges + d of a point of the path.
+SOAK_INLINE float triangleReach(float maxEdgeLength, float d) { return 1.5f * maxEdgeLength + d; }
+
+// Calls f(j) for every cloth slot j within `reach` of the path x0 -> x
+// (the candidates whose triangles can matter). The cells searched extend a
+// quarter cell further: a slot is listed under the cell it was in when the
+// grid was built, and cloth moves in its own solve after that.
+template <class F>
+SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, Vec3 x0, Vec3 x, float reach, F&& f) {
+  const float r = reach + 0.25f / g.invCellSize;
+  const Vec3 lo(fminf(x0.x, x.x) - r, fminf(x0.y, x.y) - r, fminf(x0.z, x.z) - r);
+  const Vec3 hi(fmaxf(x0.x, x.x) + r, fmaxf(x0.y, x.y) + r, fmaxf(x0.z, x.z) + r);
+  const Vec3 path = x - x0;
+  const float len2 = lengthSquared(path);
+  forEachCandidateInBox(g, lo, hi, [&](int j) {
+    if (!isCloth(p.phase[j])) return;
+    // Within reach of the path (point-segment distance).
+    const Vec3 y = p.predicted[j].xyz();
+    const float t = len2 > 0.f ? fminf(fmaxf(dot(y - x0, path) / len2, 0.f), 1.f) : 0.f;
+    if (lengthSquared(y - (x0 + path * t)) > reach * reach) return;
+    f(j);
+  });
 }
 
 // One pass of Eq. 21 over all water particles against the triangles of the

@@ -25,19 +25,6 @@ double kineticEnergy(Simulation& sim) {
   return e;
 }
 
-// Height of the cloth surface above (x, z), or NAN outside its footprint.
-float clothHeightAt(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& tris, float px, float pz) {
-  for (const auto& t : tris) {
-    const Vec3 a = x[t[0]], b = x[t[1]], c = x[t[2]];
-    const float d = (b.z - c.z) * (a.x - c.x) + (c.x - b.x) * (a.z - c.z);
-    if (std::fabs(d) < 1e-12f) continue;
-    const float l1 = ((b.z - c.z) * (px - c.x) + (c.x - b.x) * (pz - c.z)) / d;
-    const float l2 = ((c.z - a.z) * (px - c.x) + (a.x - c.x) * (pz - c.z)) / d;
-    const float l3 = 1.f - l1 - l2;
-    if (l1 >= 0.f && l2 >= 0.f && l3 >= 0.f) return l1 * a.y + l2 * b.y + l3 * c.y;
-  }
-  return NAN;
-}
 
 }  // namespace
 
@@ -111,7 +98,13 @@ TEST(Coupling, WaterDroppedOnPinnedSheetNeverCrossesIt) {
     body += water;
     auto sim = scene(body, reg);
     const auto tris = sim->cloth.objects()[0].localTriangles;
-    std::map<int, int> side;  // water id -> +1 above / -1 below, while over the sheet
+    // Crossings are counted against the triangles: for every water particle
+    // and every triangle whose prism (along its normal) holds it within
+    // 3 cm of its plane, the side it is on; a crossing is a side that
+    // changes from one step to the next while the particle stays in that
+    // triangle's prism (a particle that leaves the prism, e.g. round the
+    // sheet's edge, starts afresh).
+    std::map<std::pair<int, int>, int> side, nextSide;
     crossings = 0;
     lowest = 1e9f;
     for (int s = 0; s < 100; ++s) {
@@ -120,20 +113,34 @@ TEST(Coupling, WaterDroppedOnPinnedSheetNeverCrossesIt) {
       for (const Vec3& v : cloth) lowest = std::min(lowest, v.y);
       std::vector<Float4> x = sim->particles.downloadPositions();
       std::vector<int> phase = sim->particles.downloadPhases(), id = sim->particles.downloadIds();
-      for (std::size_t i = 0; i < x.size(); ++i) {
-        if (!isWater(phase[i])) continue;
-        const float h = clothHeightAt(cloth, tris, x[i].x, x[i].z);
-        if (std::isnan(h)) {
-          side.erase(id[i]);  // off the sheet: it may go round the edge
-          continue;
+      nextSide.clear();
+      for (std::size_t t = 0; t < tris.size(); ++t) {
+        const Vec3 a = cloth[tris[t][0]], b = cloth[tris[t][1]], c = cloth[tris[t][2]];
+        const Vec3 n = normalizedOrZero(cross(b - a, c - a));
+        const Vec3 lo(std::min({a.x, b.x, c.x}) - 0.03f, std::min({a.y, b.y, c.y}) - 0.03f,
+                      std::min({a.z, b.z, c.z}) - 0.03f);
+        const Vec3 hi(std::max({a.x, b.x, c.x}) + 0.03f, std::max({a.y, b.y, c.y}) + 0.03f,
+                      std::max({a.z, b.z, c.z}) + 0.03f);
+        for (std::size_t i = 0; i < x.size(); ++i) {
+          if (!isWater(phase[i])) continue;
+          const Vec3 q = x[i].xyz();
+          if (q.x < lo.x || q.y < lo.y || q.z < lo.z || q.x > hi.x || q.y > hi.y || q.z > hi.z) continue;
+          const float dist = dot(q - a, n);
+          if (std::fabs(dist) > 0.03f || std::fabs(dist) < 5e-4f) continue;
+          // Barycentric coordinates of the projection.
+          const Vec3 e0 = b - a, e1 = c - a, e2 = q - n * dist - a;
+          const float d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
+          const float den = d00 * d11 - d01 * d01;
+          const float v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
+          if (v < 0.f || w < 0.f || v + w > 1.f) continue;
+          const std::pair<int, int> key(id[i], int(t));
+          const int now = dist > 0.f ? 1 : -1;
+          auto it = side.find(key);
+          if (it != side.end() && it->second != now) ++crossings;
+          nextSide[key] = now;
         }
-        // Above, clearly below (half a water spacing), or in between (no change).
-        const int now = x[i].y >= h ? 1 : (x[i].y < h - 0.01f ? -1 : 0);
-        auto it = side.find(id[i]);
-        if (now == 0) continue;
-        if (it != side.end() && it->second != now) ++crossings;
-        side[id[i]] = now;
       }
+      side.swap(nextSide);
     }
   };
   int crossings = 0, dryCrossings = 0;
