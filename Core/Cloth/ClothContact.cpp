@@ -82,7 +82,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
         // The same side test as water (Eq. 21); the vertex takes the whole correction.
         const Vec3 corr = triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(),
                                                      p.position[sc].xyz(), p.predicted[sa].xyz(),
-                                                     p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist);
+                                                     p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist, 0.f);
         if (corr.x == 0.f && corr.y == 0.f && corr.z == 0.f) continue;
         // A triangle that shares a vertex with one of the vertex's own
         // triangles is its own surface, not another layer (checked only

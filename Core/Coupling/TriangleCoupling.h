@@ -26,7 +26,7 @@ SOAK_INLINE bool insideTriangle(Vec3 q, Vec3 a, Vec3 b, Vec3 c, float margin) {
 }
 
 SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, Vec3 c0, Vec3 a, Vec3 b, Vec3 c,
-                                            float d) {
+                                            float d, float depthMargin = 0.5f) {
   const Vec3 zero(0.f, 0.f, 0.f);
   Vec3 n = cross(b - a, c - a);
   const float area2 = length(n);
@@ -48,7 +48,7 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, V
   // so each triangle is grown by a margin proportional to that depth; a
   // small fixed margin catches paths through a shared edge.
   const float depth = fmaxf(-s1, 0.f);
-  const float margin = 1e-3f + 0.5f * depth / sqrtf(area2);
+  const float margin = 1e-3f + depthMargin * depth / sqrtf(area2);
   bool inside = insideTriangle(x - n * dot(x - a, n), a, b, c, margin);
   if (!inside && s1 < 0.f) {
     const float sA = sigma * dot(x0 - a, n);

@@ -209,18 +209,20 @@ TEST(Coupling, JetOnHangingSheetRuns1000StepsWithoutNaN) {
   std::ifstream in(std::string(SOAK_SOURCE_DIR) + "/Scenes/fig1_jet_dry.xml");
   const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   auto sim = test::makeSimulation(xml, Device::Cpu, reg, {"Cloth.cellsU=39", "Cloth.cellsV=39"});
-  float fastest = 0.f;
+  float fastest = 0.f, worstStretch = 0.f;
   for (int s = 0; s < 1000; ++s) {
     sim->step();
-    if (s % 50 != 49) continue;
+    if (s % 10 != 9) continue;
+    worstStretch = std::max(worstStretch, sim->cloth.maxStretch(sim->particles.view()));
     for (const Float4& p : sim->particles.downloadPositions()) ASSERT_TRUE(isFinite(p.xyz())) << "step " << s;
     for (const Vec3& v : sim->particles.downloadVelocities()) fastest = std::max(fastest, length(v));
     ASSERT_LT(fastest, 20.f) << "step " << s;  // the jet is 4 m/s; falling 1.5 m adds about 5.4 m/s
     ASSERT_LT(sim->cloth.maxStretch(sim->particles.view()), 1.f) << "step " << s;
   }
   const StatsRow row = sim->collectStats();
-  std::printf("jet: %g water particles after 1000 steps, fastest %.2f m/s, drained %.2f kg of %.2f kg emitted\n",
-              row.get("water_particles"), fastest, row.get("drained_water_mass"), row.get("emitted_water_mass"));
+  std::printf("jet: %g water particles after 1000 steps, fastest %.2f m/s, worst edge strain %.3f, drained %.2f kg "
+              "of %.2f kg emitted\n",
+              row.get("water_particles"), fastest, worstStretch, row.get("drained_water_mass"), row.get("emitted_water_mass"));
   // Mass is accounted: what is in flight plus what drained is what was emitted.
   EXPECT_NEAR(row.get("free_water_mass") + row.get("drained_water_mass"), row.get("emitted_water_mass"),
               1e-4 * row.get("emitted_water_mass"));
