@@ -77,6 +77,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
       const int v = p.id[j];
       for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
         const ClothTriangle t = c.triangles[c.vertexTriangles[k]];
+        if (t.v[0] != v) continue;  // each triangle once, from its first vertex (all three lie within reach)
         if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) continue;
         const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
         // The same side test as water (Eq. 21); the vertex takes the whole correction.

@@ -18,6 +18,8 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
         const int v = p.id[j];
         for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
           const ClothTriangle t = c.triangles[c.vertexTriangles[k]];
+          // Each triangle once, from its first vertex (all three lie within reach).
+          if (t.v[0] != v) continue;
           const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
           const float dist = 0.5f * c.thickness[t.v[0]];
           Vec3 corr = triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(),
