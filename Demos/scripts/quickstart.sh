@@ -6,10 +6,10 @@ cd "$(dirname "$0")/../.."
 bash Demos/scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
-scene=${SOAK_SCENE:-Scenes/fig1_jet_dry.xml}
+scene=${SOAK_SCENE:-Scenes/fig1_jet.xml}
 out=soak-out/default
 build/release/bin/soak run "$scene" -o "$out" "$@"
 echo
 echo "ParaView-ready output: $(pwd)/$out"
-echo "  open it:   paraview $out/water.pvd"
-echo "  (or File > Open in ParaView, pick water.pvd, Apply; press Play to animate)"
+echo "  open it:   paraview $out/water.pvd   (then File > Open $out/cloth_sheet.pvd as well)"
+echo "  (in ParaView: Apply, colour the cloth by 'saturation', show water as Point Gaussian; press Play)"
