@@ -249,6 +249,16 @@ void registerCoreElements(ModuleRegistry& r) {
             .text("name", "", "Plugin name, e.g. WetCloth (file libsoak_<name>.so in the plugin directory).")
             .text("path", "", "Path of the plugin library; used instead of name when given.")
             .create([](const ElementParams&) { return std::make_unique<NoModule>(); }));
+  r.add(ElementDecl("Camera",
+                    "The view Doc/render.py (soak's ParaView script) draws this scene from; the simulation "
+                    "ignores it.",
+                    "Output")
+            .vector("position", "m", "0 1 4", "Where the camera is.")
+            .vector("focus", "m", "0 0.8 0", "The point it looks at.")
+            .vector("up", "", "0 1 0", "Which way is up on the picture.")
+            .real("viewAngle", "deg", "30", "Vertical field of view.", 1.0, 170.0)
+            .makeUnique()
+            .create([](const ElementParams&) { return std::make_unique<NoModule>(); }));
   registerClothElement(r);
   registerWaterSourceElements(r);
 }

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libpugixml-dev libgtest-dev libtinyobjloader-dev
   paraview-dev python3-paraview
-  xvfb
+  xvfb python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do
