@@ -1,0 +1,12 @@
+#!/bin/sh
+# Runs a scene for its first output frame (a few steps) and checks that it
+# wrote finite stats. usage: SOAK=... run_scene.sh SCENE OUTDIR
+set -e
+scene=$1
+out=$2
+rm -rf "$out"
+"$SOAK" run "$scene" -o "$out" --frames 1 --device cpu --quiet
+rows=$(wc -l < "$out/stats.csv")
+[ "$rows" -eq 3 ] || { echo "run_scene: expected 2 frames in $out/stats.csv, found $((rows - 1))"; exit 1; }
+if grep -qi "nan\|inf" "$out/stats.csv"; then echo "run_scene: non-finite value in $out/stats.csv"; exit 1; fi
+echo "run_scene: $scene ok ($(tail -1 "$out/stats.csv" | cut -d, -f4,5 | tr , ' ') water, cloth particles)"
