@@ -23,6 +23,7 @@ import sys
 import xml.etree.ElementTree as ET
 
 # ParaView's modules; pvpython provides them.
+import paraview.simple
 from paraview.simple import (CreateView, PVDReader, Show, Hide, ColorBy, GetColorTransferFunction, Glyph,
                              Sphere, Plane, Box, SaveScreenshot, Render, ResetCamera)
 
@@ -65,7 +66,7 @@ def offset_at(keys, t):
 class Look:
     """Builds the pipeline once; set_time() moves it to a frame."""
 
-    def __init__(self, run, size):
+    def __init__(self, run, size, surface=False):
         scene_file = os.path.join(run, "scene.xml")
         self.scene = ET.parse(scene_file).getroot() if os.path.exists(scene_file) else ET.Element("Scene")
         self.view = CreateView("RenderView")
@@ -81,17 +82,26 @@ class Look:
         self.water = None
         wet = self.scene.find("WetCloth")
         self.s_max = float(wet.get("sMax", "0.4")) if wet is not None else 0.4
-        self._water(run)
+        self._water(run, surface)
         self._cloth(run)
         self._colliders()
         self._camera()
 
-    def _water(self, run):
+    def _water(self, run, surface):
         path = os.path.join(run, "water.pvd")
         if not os.path.exists(path):
             return
         self.water = PVDReader(FileName=path)
         self.times = list(self.water.TimestepValues or [0.0])
+        surface_path = os.path.join(run, "water_surface.pvd")
+        if surface and os.path.exists(surface_path):
+            # The mesh written with <WaterSurface> instead of the particles.
+            d = Show(PVDReader(FileName=surface_path), self.view)
+            d.ColorArrayName = ['POINTS', '']
+            d.AmbientColor = d.DiffuseColor = list(WATER_RGB)
+            d.Opacity = 0.7
+            d.Specular = 0.5
+            return
         glyph = Glyph(Input=self.water, GlyphType="Sphere")
         glyph.ScaleArray = ["POINTS", "radius"]
         glyph.ScaleFactor = 0.5          # the unit sphere glyph has radius 0.5: drawn radius = h / 4
@@ -237,13 +247,16 @@ def main(argv):
     ap.add_argument("--size", default="1280x720", help="picture size WxH (default 1280x720)")
     ap.add_argument("--no-animation", action="store_true", help="no animated GIF")
     ap.add_argument("--no-plots", action="store_true", help="no plots from stats.csv")
+    ap.add_argument("--surface", action="store_true",
+                    help="draw the water surface mesh (scenes with <WaterSurface>) instead of particles")
     args = ap.parse_args(argv)
     if not os.path.isdir(args.run):
         sys.exit(f"render.py: {args.run} is not a folder written by soak run")
     to = args.to or os.path.join(args.run, "render")
     os.makedirs(to, exist_ok=True)
     w, h = (int(x) for x in args.size.lower().split("x"))
-    look = Look(args.run, (w, h))
+    paraview.simple._DisableFirstRenderCameraReset()  # keep the scene's camera
+    look = Look(args.run, (w, h), surface=args.surface)
     if not look.times:
         sys.exit(f"render.py: no water.pvd or cloth_*.pvd in {args.run}")
     frames = list(range(len(look.times)))

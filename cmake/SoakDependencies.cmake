@@ -6,7 +6,7 @@ find_package(tinyobjloader REQUIRED)
 
 # VTK: the normal way first, then ParaView's own VTK (paraview-dev), which can
 # live beside python3-paraview on one machine (libvtk9-dev cannot).
-set(SOAK_VTK_COMPONENTS CommonCore CommonDataModel IOXML IOCore)
+set(SOAK_VTK_COMPONENTS CommonCore CommonDataModel IOXML IOCore FiltersCore)
 find_package(VTK QUIET COMPONENTS ${SOAK_VTK_COMPONENTS})
 if(NOT VTK_FOUND)
   find_package(VTK REQUIRED COMPONENTS ${SOAK_VTK_COMPONENTS}

@@ -1,5 +1,9 @@
 #include "Output/FrameWriter.h"
 
+#include <vtkPolyData.h>
+
+#include "Output/WaterSurface.h"
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -43,6 +47,21 @@ std::string frameName(const std::string& prefix, int frame, const char* ext) {
 }
 }  // namespace
 
+void FrameWriter::writeWaterSurface(Simulation& sim, int frame, const std::vector<Vec3>& points,
+                                    const std::vector<float>& mass, const std::vector<float>& radius) {
+  if (!surface_) {
+    makeDirectories(dir_ + "/water_surface");
+    surface_ = std::make_unique<PvdCollection>(dir_ + "/water_surface.pvd");
+  }
+  WaterSurfaceSettings s;
+  s.cellSize = sim.settings.surfaceCellSize;
+  s.iso = sim.settings.surfaceIso;
+  vtkSmartPointer<vtkPolyData> surface = buildWaterSurface(points, mass, radius, sim.water.restDensity, s);
+  const std::string file = frameName("water_surface", frame, "vtp");
+  writePolyDataVtp(dir_ + "/water_surface/" + file, surface);
+  surface_->add(sim.time(), "water_surface/" + file);
+}
+
 void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
   ParticleState& ps = sim.particles;
   std::vector<Float4> pos = ps.downloadPositions();
@@ -70,6 +89,7 @@ void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
   const std::string file = frameName("water", frame, "vtu");
   writeParticlesVtu(dir_ + "/water/" + file, points, {v, m, r, ids, rho});
   water_.add(sim.time(), "water/" + file);
+  if (sim.settings.surfaceCellSize > 0.f) writeWaterSurface(sim, frame, points, m.values, r.values);
   writeCloth(sim, frame);
 
   StatsRow row;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "Base/Vec3.h"
 #include "Output/PvdCollection.h"
 #include "Registry/Module.h"
 
@@ -14,6 +15,7 @@ class Simulation;
 // Writes a run's folder:
 //   OUT/water.pvd + OUT/water/water_NNNNNN.vtu   water particles
 //   OUT/cloth_<name>.pvd + OUT/cloth_<name>/*.vtp  each cloth as a triangle mesh
+//   OUT/water_surface.pvd + OUT/water_surface/*.vtp  with <WaterSurface>
 //   OUT/stats.csv                                 one row per frame
 //   OUT/scene.xml                                 the scene as run
 class FrameWriter {
@@ -27,9 +29,12 @@ class FrameWriter {
  private:
   void writeStatsRow(const StatsRow& row);
   void writeCloth(Simulation& sim, int frame);
+  void writeWaterSurface(Simulation& sim, int frame, const std::vector<Vec3>& points, const std::vector<float>& mass,
+                         const std::vector<float>& radius);
   std::string dir_;
   PvdCollection water_;
   std::vector<std::unique_ptr<PvdCollection>> cloth_;
+  std::unique_ptr<PvdCollection> surface_;
   std::ofstream stats_;
   std::vector<std::string> statsColumns_;
   int frames_ = 0;

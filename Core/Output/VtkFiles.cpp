@@ -93,6 +93,12 @@ void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
   configureAndWrite(w.GetPointer(), path);
 }
 
+void writePolyDataVtp(const std::string& path, vtkPolyData* poly) {
+  vtkNew<vtkXMLPolyDataWriter> w;
+  w->SetInputData(poly);
+  configureAndWrite(w.GetPointer(), path);
+}
+
 void writeFileAtomically(const std::string& path, const std::string& content) {
   std::string tmp = path + ".tmp";
   int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);

@@ -6,6 +6,8 @@
 
 #include "Base/Vec3.h"
 
+class vtkPolyData;
+
 namespace soak {
 
 struct PointArray {
@@ -20,6 +22,9 @@ void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points,
 // A triangle mesh as poly data.
 void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
                   const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data);
+
+// Any poly data (e.g. the water surface), written the same way.
+void writePolyDataVtp(const std::string& path, vtkPolyData* poly);
 
 // Writes `content` to `path` atomically (temporary file, fsync, rename), so a
 // reader never sees a half-written file.

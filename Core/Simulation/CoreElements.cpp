@@ -177,6 +177,18 @@ class ColliderModule : public Module {
 // other elements are checked); as a module it does nothing.
 class NoModule : public Module {};
 
+class WaterSurfaceModule : public Module {
+ public:
+  explicit WaterSurfaceModule(const ElementParams& p) : p_(p) {}
+  void configure(Simulation& sim) override {
+    sim.settings.surfaceCellSize = p_.realf("cellSize");
+    sim.settings.surfaceIso = p_.realf("iso");
+  }
+
+ private:
+  ElementParams p_;
+};
+
 }  // namespace
 
 void registerCoreElements(ModuleRegistry& r) {
@@ -259,6 +271,14 @@ void registerCoreElements(ModuleRegistry& r) {
             .real("viewAngle", "deg", "30", "Vertical field of view.", 1.0, 170.0)
             .makeUnique()
             .create([](const ElementParams&) { return std::make_unique<NoModule>(); }));
+  r.add(ElementDecl("WaterSurface",
+                    "Writes a water surface mesh per frame (water_surface.pvd): the particles' relative density "
+                    "splatted on a grid and contoured with flying edges (VTK).",
+                    "Output")
+            .real("cellSize", "m", "0.014", "Grid cell (the paper: about 0.7 r0).", 0.0, 10.0, true)
+            .real("iso", "", "0.5", "Relative density (rho / rho0) of the surface.", 0.0, 10.0, true)
+            .makeUnique()
+            .create([](const ElementParams& p) { return std::make_unique<WaterSurfaceModule>(p); }));
   registerClothElement(r);
   registerWaterSourceElements(r);
 }

@@ -13,6 +13,8 @@ struct SimulationSettings {
   int clothIterations = 8;     // n_s of the cloth constraints (Eq. 5)
   Vec3 domainMin{-1e3f, -1e3f, -1e3f};  // water leaving this box is drained
   Vec3 domainMax{1e3f, 1e3f, 1e3f};
+  float surfaceCellSize = 0.f;  // m; > 0: write a water surface mesh per frame (<WaterSurface>)
+  float surfaceIso = 0.5f;      // relative density of that surface
 };
 
 // Water particle defaults from <Water> (Table 1).
