@@ -66,11 +66,12 @@ def offset_at(keys, t):
 class Look:
     """Builds the pipeline once; set_time() moves it to a frame."""
 
-    def __init__(self, run, size, surface=False):
+    def __init__(self, run, size=None, surface=False, view=None):
         scene_file = os.path.join(run, "scene.xml")
         self.scene = ET.parse(scene_file).getroot() if os.path.exists(scene_file) else ET.Element("Scene")
-        self.view = CreateView("RenderView")
-        self.view.ViewSize = list(size)
+        self.view = view or CreateView("RenderView")
+        if size:
+            self.view.ViewSize = list(size)
         self.view.Background = [1.0, 1.0, 1.0]
         try:
             self.view.UseColorPaletteForBackground = 0
