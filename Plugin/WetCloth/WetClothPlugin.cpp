@@ -245,7 +245,7 @@ SOAK_PLUGIN(WetCloth) {
           .choice("diffusionForm", {"conservative", "literal"}, "conservative",
                   "conservative: pairwise exchange that conserves water and reduces to Eq. 17 per receiver; "
                   "literal: Eq. 17 as printed (does not conserve water).")
-          .real("emissionBeta", "1/s^2", "1", "beta of Eq. 18 (no value in the paper).", 0.0, 1e6)
+          .real("emissionBeta", "1/s^2", "10", "beta of Eq. 18 (no value in the paper; Doc/model.md says why 10).", 0.0, 1e6)
           .real("dripMass", "kg", "0.002", "m^threshold: buffer mass that becomes a drip (Table 1).", 0.0, 1.0, true)
           .real("dripAttraction", "m/s^2", "10", "kappa^e of Eq. 19 (Table 1).", 0.0, 1e6)
           .real("dripSaturationWeight", "kg", "0.02", "eta^e of Eq. 19 (no value in the paper).", 0.0, 1e3)

@@ -18,7 +18,7 @@ struct WetParams {
   float epsilon = 0.1f;        // Eq. 15 relaxation, relative to (sum_j a_ij)^2
   int diffusionIterations = 1;
   DiffusionForm form = DiffusionForm::Conservative;
-  float beta = 1.f;            // Eq. 18 (m/s^2 per (1/m)); see Doc/model.md
+  float beta = 10.f;           // Eq. 18; see Doc/model.md
   float mThreshold = 0.002f;   // drip mass (kg)
   float kappaE = 10.f;         // Eq. 19 attraction (m/s^2)
   float etaE = 0.02f;          // Eq. 19 saturation weight (kg)
