@@ -2,6 +2,7 @@
 
 #include "Backend/ForEach.h"
 #include "Coupling/TriangleCoupling.h"
+#include "Physics/Integrate.h"
 
 namespace soak {
 
@@ -40,13 +41,7 @@ void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec
       });
       if (count > 0) delta[i] = sum / float(count);
     }, "cloth.contact");
-    forEach(d, p.count, SOAK_LAMBDA(int i) {
-      const Vec3 dx = delta[i];
-      if (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f) {
-        const Float4 x = p.predicted[i];
-        p.predicted[i] = Float4(x.xyz() + dx, x.w);
-      }
-    }, "cloth.contact.apply");
+    applyCorrections(d, p, delta, "cloth.contact.apply");
   }
 }
 
@@ -68,39 +63,26 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
     const Float4 xi4 = p.predicted[i];
     if (!isCloth(p.phase[i]) || xi4.w == 0.f) return;
     const int vi = p.id[i];
-    const Vec3 x0 = p.position[i].xyz(), resti = c.restPosition[vi];
+    const Vec3 x0 = p.position[i].xyz();
     const float dist = 0.5f * c.thickness[vi];
     Vec3 x = xi4.xyz();
-    const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
-    forEachClothNearPath(g, p, x0, x, reach, [&](int j) {
-      if (j == i) return;
-      const int v = p.id[j];
-      for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
-        const ClothTriangle t = c.triangles[c.vertexTriangles[k]];
-        if (t.v[0] != v) continue;  // each triangle once, from its first vertex (all three lie within reach)
-        if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) continue;
-        const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
-        // The same side test as water (Eq. 21); the vertex takes the whole correction.
-        const Vec3 corr = triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(),
-                                                     p.position[sc].xyz(), p.predicted[sa].xyz(),
-                                                     p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist, 0.f);
-        if (corr.x == 0.f && corr.y == 0.f && corr.z == 0.f) continue;
-        // A triangle that shares a vertex with one of the vertex's own
-        // triangles is its own surface, not another layer (checked only
-        // here, where a correction is due).
-        if (p.phase[j] == p.phase[i] && touchesOneRing(c, vi, t)) continue;
-        x += corr;
-      }
+    forEachTriangleNearPath(g, p, c, x0, x, [&](const ClothTriangle& t, int j) {
+      if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) return;
+      const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
+      // The same side test as water (Eq. 21); the vertex takes the whole correction.
+      const Vec3 corr = triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(),
+                                                   p.position[sc].xyz(), p.predicted[sa].xyz(),
+                                                   p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist, 0.f);
+      if (corr.x == 0.f && corr.y == 0.f && corr.z == 0.f) return;
+      // A triangle that shares a vertex with one of the vertex's own
+      // triangles is its own surface, not another layer (checked only
+      // here, where a correction is due).
+      if (p.phase[j] == p.phase[i] && touchesOneRing(c, vi, t)) return;
+      x += corr;
     });
     delta[i] = x - xi4.xyz();
   }, "cloth.vertexTriangle");
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    const Vec3 dx = delta[i];
-    if (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f) {
-      const Float4 x = p.predicted[i];
-      p.predicted[i] = Float4(x.xyz() + dx, x.w);
-    }
-  }, "cloth.vertexTriangle.apply");
+  applyCorrections(d, p, delta, "cloth.vertexTriangle.apply");
 }
 
 }  // namespace soak

@@ -88,6 +88,22 @@ SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, 
   });
 }
 
+// Calls f(t, j) once for every cloth triangle t that can matter to a point
+// moving from x0 to x (j: the slot of t's first vertex, from which it is
+// visited; all three vertices lie within reach).
+template <class F>
+SOAK_INLINE void forEachTriangleNearPath(const GridView& g, const ParticleView& p, const ClothView& c, Vec3 x0, Vec3 x,
+                                         F&& f) {
+  const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
+  forEachClothNearPath(g, p, x0, x, reach, [&](int j) {
+    const int v = p.id[j];
+    for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
+      const ClothTriangle t = c.triangles[c.vertexTriangles[k]];
+      if (t.v[0] == v) f(t, j);
+    }
+  });
+}
+
 // One pass of Eq. 21 over all water particles against the triangles of the
 // cloth particles around them. `vertexStiffness` (per cloth vertex, may be
 // null for 1) gives kappa_couple of a triangle as the mean of its vertices

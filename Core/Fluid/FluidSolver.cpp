@@ -131,10 +131,7 @@ void applyDensityCorrections(Device d, ParticleView p, GridView g, const float* 
     }
     delta[i] = dx;
   }, "fluid.delta");
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    Float4 x = p.predicted[i];
-    if (x.w > 0.f) p.predicted[i] = Float4(x.xyz() + delta[i], x.w);
-  }, "fluid.apply");
+  applyCorrections(d, p, delta, "fluid.apply");
 }
 
 }  // namespace

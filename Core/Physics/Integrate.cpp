@@ -33,6 +33,14 @@ void projectColliders(Device d, ParticleView p, const Collider* colliders, int c
   }, "colliders");
 }
 
+void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* what) {
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    const Vec3 dx = delta[i];
+    const Float4 x = p.predicted[i];
+    if (x.w > 0.f && (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f)) p.predicted[i] = Float4(x.xyz() + dx, x.w);
+  }, what);
+}
+
 void updateVelocities(Device d, ParticleView p, float dt) {
   const float inv = 1.f / dt;
   forEach(d, p.count, SOAK_LAMBDA(int i) {

@@ -20,6 +20,10 @@ void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Ve
 void projectColliders(Device d, ParticleView p, const Collider* colliders, int colliderCount, float radiusScale,
                       float dt);
 
+// x* += delta for every particle that moves (inverse mass > 0): the second
+// half of a Jacobi pass whose corrections were gathered into `delta`.
+void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* what);
+
 // v = (x* - x) / dt ; x = x*.
 void updateVelocities(Device d, ParticleView p, float dt);
 

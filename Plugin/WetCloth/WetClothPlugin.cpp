@@ -35,9 +35,11 @@ class WetClothModule : public Module {
     const std::vector<int> phase = ps.downloadPhases(), id = ps.downloadIds();
     for (std::size_t i = 0; i < mass.size(); ++i)
       if (isCloth(phase[i])) dry[std::size_t(id[i])] = mass[i];
-    dryMass_ = Buffer<float>(sim.device());
+    // Every array on the simulation's device (the Buffer members start on the CPU).
+    for (Buffer<float>* b : {&dryMass_, &kappa_, &scratchA_, &scratchB_, &scratchC_}) *b = Buffer<float>(sim.device());
+    delta_ = Buffer<Vec3>(sim.device());
+    spawn_ = Buffer<int>(sim.device());
     dryMass_.upload(dry);
-    kappa_ = Buffer<float>(sim.device());
     kappa_.upload(std::vector<float>(std::size_t(vertices), 1.f));
     sim.couplingStiffness = kappa_.data();
     ref_.mass = sim.water.particleMass;
@@ -83,12 +85,7 @@ class WetClothModule : public Module {
   WetArrays arrays(Simulation& sim) {
     ParticleState& ps = sim.particles;
     const std::size_t n = std::size_t(ps.count());
-    for (Buffer<float>* b : {&scratchA_, &scratchB_, &scratchC_}) {
-      if (b->device() != sim.device()) *b = Buffer<float>(sim.device());
-      b->resize(n);
-    }
-    if (delta_.device() != sim.device()) delta_ = Buffer<Vec3>(sim.device());
-    if (spawn_.device() != sim.device()) spawn_ = Buffer<int>(sim.device());
+    for (Buffer<float>* b : {&scratchA_, &scratchB_, &scratchC_}) b->resize(n);
     delta_.resize(n);
     spawn_.resize(n);
     WetArrays a;

@@ -5,6 +5,7 @@
 #include "Backend/ForEach.h"
 #include "Backend/Primitives.h"
 #include "Cloth/ClothVolume.h"
+#include "Physics/Integrate.h"
 #include "WetKernels.h"
 
 namespace soak::wet {
@@ -372,13 +373,7 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
     });
     delta[i] = f * (dt * dt * xi4.w);
   }, "wet.stick");
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    const Vec3 dx = delta[i];
-    if (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f) {
-      const Float4 x = p.predicted[i];
-      p.predicted[i] = Float4(x.xyz() + dx, x.w);
-    }
-  }, "wet.stick.apply");
+  applyCorrections(d, p, delta, "wet.stick.apply");
 }
 
 }  // namespace soak::wet
