@@ -48,7 +48,8 @@ class ClothModule : public Module {
     spec.supportRadius = p_.given("supportRadius") ? p_.realf("supportRadius") : sim.water.supportRadius;
     spec.thickness = p_.realf("thickness");
     spec.tetherSlack = p_.boolean("tethers") ? p_.realf("tetherSlack") : -1.f;
-    const int iterations = sim.settings.clothIterations;
+    // Eq. 5 over all the rounds of a step, so that sub-steps keep the stiffness per step.
+    const int iterations = sim.settings.clothIterations * sim.settings.clothSubsteps;
     if (p_.text("model") == "xpbd") {
       spec.stretch.compliance = p_.realf("stretchCompliance");
       spec.bend.compliance = p_.realf("bendCompliance");

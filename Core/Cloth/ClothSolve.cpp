@@ -1,6 +1,7 @@
 #include "Cloth/ClothSolve.h"
 
 #include "Backend/ForEach.h"
+#include "Physics/Collider.h"
 
 namespace soak {
 
@@ -63,6 +64,70 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
       }, "cloth.bend");
     }
   }
+}
+
+void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
+                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations,
+                  ClothSubstepScratch s, const std::function<void(ParticleView)>& contacts) {
+  const ClothView c = cloth.view();
+  const float h = dt / float(substeps);
+  // Non-cloth particles keep their place in the sub-step view.
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    s.velocityFix[i] = Vec3(0.f, 0.f, 0.f);
+    s.start[i] = p.position[i];
+  }, "cloth.substep.clear");
+  ParticleView substepView = p;
+  substepView.position = s.start;
+  // The step's free motion x* - x holds gravity over dt; take it out again so
+  // that each sub-step adds its own h of it.
+  forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+    const int i = c.vertexSlot[v];
+    const Vec3 x = p.position[i].xyz();
+    s.velocity[i] = (p.predicted[i].xyz() - x) * (1.f / dt) - gravity * dt;
+  }, "cloth.substep.begin");
+  for (int sub = 0; sub < substeps; ++sub) {
+    const float along = float(sub + 1) / float(substeps);
+    forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+      const int i = c.vertexSlot[v];
+      const Float4 x = p.position[i];
+      if (x.w == 0.f) {
+        const int k = c.attachCollider[v];
+        // Attached vertices follow their collider's path; fixed pins stay.
+        const Vec3 target = k >= 0 ? c.restPosition[v] + colliders[k].displacement : x.xyz();
+        p.predicted[i] = Float4(x.xyz() + (target - x.xyz()) * along, 0.f);
+        return;
+      }
+      const Vec3 vel = s.velocity[i] + gravity * h;
+      s.velocity[i] = vel;
+      p.predicted[i] = Float4(s.start[i].xyz() + vel * h, x.w);
+    }, "cloth.substep.predict");
+    cloth.resetMultipliers();
+    solveClothConstraints(d, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), iterations, h);
+    forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+      const int i = c.vertexSlot[v];
+      const Float4 xp = p.predicted[i];
+      if (xp.w == 0.f) return;
+      const Vec3 x0 = s.start[i].xyz();
+      const float r = collisionRadiusScale * p.radius[i];
+      Vec3 q = xp.xyz();
+      for (int k = 0; k < colliderCount; ++k) q = projectOutOfCollider(colliders[k], x0, q, r, h);
+      p.predicted[i] = Float4(q, xp.w);
+    }, "cloth.substep.colliders");
+    contacts(substepView);
+    forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+      const int i = c.vertexSlot[v];
+      const Float4 q = p.predicted[i];
+      if (q.w == 0.f) return;
+      s.velocity[i] = (q.xyz() - s.start[i].xyz()) * (1.f / h);
+      s.start[i] = q;
+    }, "cloth.substep.end");
+  }
+  forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+    const int i = c.vertexSlot[v];
+    const Float4 x = p.position[i];
+    if (x.w == 0.f) return;
+    s.velocityFix[i] = s.velocity[i] - (p.predicted[i].xyz() - x.xyz()) * (1.f / dt);
+  }, "cloth.substep.finish");
 }
 
 }  // namespace soak

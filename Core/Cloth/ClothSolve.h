@@ -1,5 +1,6 @@
 #pragma once
 // The cloth stages of the step (stateless over particle and cloth arrays).
+#include <functional>
 #include <vector>
 
 #include "Cloth/ClothSystem.h"
@@ -14,5 +15,27 @@ void moveAttachedVertices(Device d, ParticleView p, ClothView c, const Collider*
 // colour at a time (Gauss-Seidel between colours, parallel within one).
 void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vector<int>& stretchColours,
                            const std::vector<int>& bendColours, int iterations, float dt);
+
+// Buffers of the cloth sub-steps, per particle slot.
+struct ClothSubstepScratch {
+  Float4* start = nullptr;      // position (and inverse mass) at the start of the sub-step
+  Vec3* velocity = nullptr;     // velocity through the sub-steps
+  Vec3* velocityFix = nullptr;  // out: end velocity minus (x* - x) / dt; 0 for non-cloth particles
+};
+
+// The cloth part of one step in `substeps` sub-steps of h = dt / substeps
+// (Macklin et al. 2019, "Small steps in physics simulation"): each sub-step
+// integrates gravity over h, moves attached vertices along their collider's
+// path, runs `iterations` constraint rounds with time step h and projects the
+// cloth out of the colliders. The strain left by too few iterations grows
+// with the step squared, so K sub-steps of n iterations leave far less than
+// one step of K n (Doc/model.md, "Cloth sub-steps"). `contacts` runs after
+// each sub-step's colliders with a view whose `position` is the sub-step's
+// start (the x0 of the contact tests). Writes the cloth's
+// predicted positions and velocityFix, which finalize adds to (x* - x) / dt so
+// that a cloth particle leaves the step with its last sub-step's velocity.
+void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
+                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations,
+                  ClothSubstepScratch scratch, const std::function<void(ParticleView)>& contacts);
 
 }  // namespace soak

@@ -35,27 +35,32 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, V
   Vec3 n0 = normalizedOrZero(cross(b0 - a0, c0 - a0));
   if (dot(n0, n) <= 0.f) n0 = n;  // triangle flipped within a step: trust the new normal
   // The side the particle came from (the +/- of Eq. 21).
-  const float sigma = dot(x0 - a0, n0) >= 0.f ? 1.f : -1.f;
+  const float s0 = dot(x0 - a0, n0);
+  const float sigma = s0 >= 0.f ? 1.f : -1.f;
   const float s1 = sigma * dot(x - a, n);
   const float C = s1 - d;
   if (C >= 0.f) return zero;
-  // The constraint applies when the particle passes through the triangle's
-  // interior: where its path meets the plane, or where its predicted
-  // position projects onto the plane (the cloth moves too, and can sweep
-  // through a particle that hardly moved). A point some depth beyond a
-  // crease between two triangles projects along each one's normal into
-  // neither of them (the gap grows with the depth times the crease angle),
-  // so each triangle is grown by a margin proportional to that depth; a
-  // small fixed margin catches paths through a shared edge.
-  const float depth = fmaxf(-s1, 0.f);
-  const float margin = 1e-3f + depthMargin * depth / sqrtf(area2);
-  bool inside = insideTriangle(x - n * dot(x - a, n), a, b, c, margin);
-  if (!inside && s1 < 0.f) {
-    const float sA = sigma * dot(x0 - a, n);
-    if (sA > 0.f) {
-      const Vec3 q = x0 + (x - x0) * (sA / (sA - s1));
-      inside = insideTriangle(q - n * dot(q - a, n), a, b, c, margin);
-    }
+  bool inside;
+  if (s1 >= 0.f) {
+    // Still on its side, closer than d: where it projects onto the plane.
+    inside = insideTriangle(x - n * dot(x - a, n), a, b, c, 1e-3f);
+  } else {
+    // It passed the plane. The constraint applies only if it passed through
+    // the triangle: where the path meets the plane, both moving (the cloth
+    // moves too, and can sweep through a particle that hardly moved), taken
+    // at the fraction t where the signed distance changes sign. A point that
+    // went around the triangle's edge crossed the plane outside it and is
+    // left alone (before, any end point projecting inside was put back,
+    // which threw cloth vertices of a curling sheet centimetres). The
+    // triangle is grown by a margin that grows with the depth reached: the
+    // path's crossing through a crease between two triangles may fall just
+    // outside each.
+    const float t = fabsf(s0) / (fabsf(s0) - s1);
+    const Vec3 xt = x0 + (x - x0) * t;
+    const Vec3 at = a0 + (a - a0) * t, bt = b0 + (b - b0) * t, ct = c0 + (c - c0) * t;
+    const Vec3 nt = normalizedOrZero(cross(bt - at, ct - at));
+    const float margin = 1e-3f + depthMargin * (-s1) / sqrtf(area2);
+    inside = insideTriangle(xt - nt * dot(xt - at, nt), at, bt, ct, margin);
   }
   if (!inside) return zero;
   return n * (sigma * -C);

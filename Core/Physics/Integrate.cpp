@@ -41,12 +41,14 @@ void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* w
   }, what);
 }
 
-void updateVelocities(Device d, ParticleView p, float dt) {
+void updateVelocities(Device d, ParticleView p, float dt, const Vec3* velocityFix) {
   const float inv = 1.f / dt;
   forEach(d, p.count, SOAK_LAMBDA(int i) {
     Float4 x = p.position[i];
     Float4 xp = p.predicted[i];
-    p.velocity[i] = x.w == 0.f ? Vec3(0.f, 0.f, 0.f) : (xp.xyz() - x.xyz()) * inv;
+    Vec3 v = (xp.xyz() - x.xyz()) * inv;
+    if (velocityFix) v += velocityFix[i];
+    p.velocity[i] = x.w == 0.f ? Vec3(0.f, 0.f, 0.f) : v;
     p.position[i] = xp;
   }, "finalize");
 }

@@ -24,7 +24,8 @@ void projectColliders(Device d, ParticleView p, const Collider* colliders, int c
 // half of a Jacobi pass whose corrections were gathered into `delta`.
 void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* what);
 
-// v = (x* - x) / dt ; x = x*.
-void updateVelocities(Device d, ParticleView p, float dt);
+// v = (x* - x) / dt (+ velocityFix, where given: the cloth sub-steps' end
+// velocity minus their mean); x = x*.
+void updateVelocities(Device d, ParticleView p, float dt, const Vec3* velocityFix = nullptr);
 
 }  // namespace soak

@@ -21,6 +21,7 @@ class SimulationModule : public Module {
     sim.settings.gravity = p_.vector("gravity");
     sim.settings.maxSpeed = p_.realf("maxSpeed");
     sim.settings.clothIterations = int(p_.integer("clothIterations"));
+    sim.settings.clothSubsteps = int(p_.integer("clothSubsteps"));
     sim.settings.domainMin = p_.vector("domainMin");
     sim.settings.domainMax = p_.vector("domainMax");
     sim.couplingPasses = int(p_.integer("couplingPasses"));
@@ -201,7 +202,12 @@ void registerCoreElements(ModuleRegistry& r) {
             .vector("gravity", "m/s^2", "0 -9.81 0", "Gravitational acceleration; +y is up by default.")
             .real("maxSpeed", "m/s", "50", "A particle faster than this is reported as an instability.", 0.0,
                   1e9, true)
-            .integer("clothIterations", "8", "Cloth solver iterations n_s per step (Eq. 5).", 1, 1000)
+            .integer("clothIterations", "8", "Cloth solver iterations n_s per step (Eq. 5), per cloth sub-step.", 1,
+                     1000)
+            .integer("clothSubsteps", "1",
+                     "Cloth sub-steps per step: gravity, constraints and colliders of the cloth advance in steps "
+                     "of timeStep / clothSubsteps (less stretch than the same number of iterations in one step).",
+                     1, 100)
             .integer("couplingPasses", "2", "Passes of the water-triangle constraint (Eq. 21) per step.", 1, 100)
             .integer("contactPasses", "2", "Passes of cloth self and cloth-cloth contact per step.", 0, 100)
             .vector("domainMin", "m", "-1000 -1000 -1000", "Water below this corner is removed (drained).")

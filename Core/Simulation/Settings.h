@@ -10,7 +10,8 @@ struct SimulationSettings {
   double frameRate = 30.0;     // output frames per simulated second
   Vec3 gravity{0.f, -9.81f, 0.f};
   float maxSpeed = 50.f;       // m/s; a faster particle is an instability
-  int clothIterations = 8;     // n_s of the cloth constraints (Eq. 5)
+  int clothIterations = 8;     // n_s of the cloth constraints (Eq. 5), per cloth sub-step
+  int clothSubsteps = 1;       // cloth sub-steps per step (Doc/model.md, "Cloth sub-steps")
   Vec3 domainMin{-1e3f, -1e3f, -1e3f};  // water leaving this box is drained
   Vec3 domainMax{1e3f, 1e3f, 1e3f};
   float surfaceCellSize = 0.f;  // m; > 0: write a water surface mesh per frame (<WaterSurface>)

@@ -51,16 +51,31 @@ void Simulation::addCoreStages() {
                      if (s.cloth.empty()) return;
                      ParticleView p = s.particles.view();
                      ClothView c = s.cloth.view();
+                     s.contactDelta_.resize(p.count);
+                     auto contacts = [&s, c](ParticleView view) {
+                       resolveClothContacts(s.device(), view, s.grid.view(), c, s.contactDelta_.data(),
+                                            s.contactPasses);
+                       resolveVertexTriangleContacts(s.device(), view, s.grid.view(), c, s.contactDelta_.data());
+                     };
+                     if (s.settings.clothSubsteps > 1) {
+                       s.substepStart_.resize(p.count);
+                       s.substepVelocity_.resize(p.count);
+                       s.velocityFix_.resize(p.count);
+                       substepCloth(s.device(), p, s.cloth, s.deviceColliders(), int(s.colliders.size()),
+                                    kCollisionRadiusScale, s.settings.gravity, float(s.settings.timeStep),
+                                    s.settings.clothSubsteps, s.settings.clothIterations,
+                                    {s.substepStart_.data(), s.substepVelocity_.data(), s.velocityFix_.data()},
+                                    contacts);
+                       return;
+                     }
                      moveAttachedVertices(s.device(), p, c, s.deviceColliders());
                      s.cloth.resetMultipliers();
                      solveClothConstraints(s.device(), p, c, s.cloth.edgeColourStart(), s.cloth.bendColourStart(),
                                            s.settings.clothIterations, float(s.settings.timeStep));
-                     s.contactDelta_.resize(p.count);
                      // Colliders first, so that contact sees a layer resting on the floor where it is.
                      projectColliders(s.device(), p, s.deviceColliders(), int(s.colliders.size()),
                                       kCollisionRadiusScale, float(s.settings.timeStep));
-                     resolveClothContacts(s.device(), p, s.grid.view(), c, s.contactDelta_.data(), s.contactPasses);
-                     resolveVertexTriangleContacts(s.device(), p, s.grid.view(), c, s.contactDelta_.data());
+                     contacts(p);
                    }});
   pipeline.append({"collide", [](Simulation& s) {
                      projectColliders(s.device(), s.particles.view(), s.deviceColliders(),
@@ -73,7 +88,9 @@ void Simulation::addCoreStages() {
                                             s.couplingStiffness, s.couplingPasses);
                    }});
   pipeline.append({"finalize", [](Simulation& s) {
-                     updateVelocities(s.device(), s.particles.view(), s.settings.timeStep);
+                     const bool substeps = s.settings.clothSubsteps > 1 && !s.cloth.empty();
+                     updateVelocities(s.device(), s.particles.view(), s.settings.timeStep,
+                                      substeps ? s.velocityFix_.data() : nullptr);
                      s.fluid.applyViscosity(s);
                    }});
 }

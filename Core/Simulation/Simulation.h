@@ -81,6 +81,8 @@ class Simulation {
   void addCoreStages();
   Device device_;
   Buffer<Vec3> contactDelta_;
+  Buffer<Float4> substepStart_;  // cloth sub-steps
+  Buffer<Vec3> substepVelocity_, velocityFix_;
   Buffer<int> removeFlag_;
   Buffer<float> removedMass_, removedCount_;
   Buffer<Vec3> sinkBuffer_;
