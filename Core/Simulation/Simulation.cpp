@@ -13,6 +13,7 @@ namespace soak {
 
 Simulation::Simulation(Device device)
     : particles(device), grid(device), cloth(device), fluid(device), device_(device), contactDelta_(device),
+      substepStart_(device), substepVelocity_(device), velocityFix_(device),
       removeFlag_(device), removedMass_(device), removedCount_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
 Simulation::~Simulation() = default;

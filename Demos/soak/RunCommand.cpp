@@ -11,6 +11,7 @@
 #include "Plugins/PluginLoader.h"
 #include "ProgressReport.h"
 #include "Scene/Scene.h"
+#include "Simulation/LoadedScene.h"
 #include "Simulation/Runner.h"
 #include "Simulation/Simulation.h"
 
@@ -51,22 +52,12 @@ void printProfile(const Simulation& sim) {
 
 int runCommand(const RunArguments& args) {
   if (args.threads > 0) omp_set_num_threads(args.threads);
-  ModuleRegistry registry;
-  registerCoreElements(registry);
-  PluginLoader loader(registry);
-  loadStandardPlugins(loader, args.plugins);
-
   // Everything that can fail because of the input happens before the output
   // folder is touched: parse, validate, build the simulation.
-  Scene scene = Scene::load(args.scene, args.overrides, registry,
-                            [&](const std::string& what, bool isPath, const std::string& where) {
-                              if (isPath) loader.loadFile(what, where);
-                              else loader.loadByName(what, where);
-                            });
   const Device device = resolveDevice(args.device);
-  Simulation sim(device);
-  for (const SceneElement& e : scene.elements()) sim.addModule(e.decl->factory(e.params));
-  sim.initialize();
+  std::unique_ptr<LoadedScene> loaded = loadScene({args.scene, "", args.overrides, args.plugins}, device);
+  Simulation& sim = *loaded->sim;
+  const Scene& scene = loaded->scene;
 
   RunOptions options;
   options.frames = args.frames;

@@ -156,6 +156,16 @@ TEST(GpuAgreement, WaterOnClothWithinCpuSensitivity) {
   expectCudaWithinCpuSensitivity("water block on a pinned sheet", kWaterOnCloth, 40);
 }
 
+TEST(GpuAgreement, ClothSubstepsWithWaterWithinCpuSensitivity) {
+  // Cloth sub-steps (4 x 4), with a collider, contacts and water on the sheet.
+  SOAK_SKIP_WITHOUT_GPU();
+  const std::string xml =
+      "<Scene><Simulation clothSubsteps='4' clothIterations='4'/><Sphere center='0 0.3 0' radius='0.15' "
+      "friction='0.4'/><Cloth origin='-0.3 0.5 -0.3' axisU='1 0 0' axisV='0 0 1' width='0.6' height='0.6' "
+      "cellsU='30' cellsV='30'/><WaterBlock min='-0.1 0.53 -0.1' max='0.1 0.63 0.1'/></Scene>";
+  expectCudaWithinCpuSensitivity("sheet on a ball with water, cloth sub-steps", xml, 40);
+}
+
 TEST(GpuAgreement, JetOnClothWithinCpuSensitivity) {
   SOAK_SKIP_WITHOUT_GPU();
   expectCudaWithinCpuSensitivity("jet on a hanging sheet", kJet, 12);

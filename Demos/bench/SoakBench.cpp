@@ -1,0 +1,308 @@
+// soak-bench: time steps of the paper's Table 2 scenes and of synthetic
+// scale scenes (a water block falling on a sheet pinned at four corners,
+// about three quarters water, with wetting), and print a table shaped like
+// Table 2 plus per-stage times, throughput and device memory per particle.
+//
+//   soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]
+//              [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]
+//
+// Each case: the scene is built, advanced by its warm-up (simulated seconds
+// for Table 2 scenes, so the jet has emitted its water; steps for the scale
+// scenes), then N steps are timed twice: once as a plain run (wall time over
+// N steps, device synchronised at the end) and once with per-stage profiling
+// (device synchronised after each stage, so the stages add up to a little
+// more than the plain time).
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Base/Error.h"
+#include "Simulation/LoadedScene.h"
+
+using namespace soak;
+
+namespace {
+
+struct Case {
+  std::string name;       // row name
+  std::string scenePath;  // file, or empty for a synthetic scene
+  std::string text;       // synthetic scene XML
+  double warmupSeconds = 0.0;
+  int warmupSteps = 0;
+  double paperWater = 0, paperCloth = 0, paperWettingMs = -1, paperTotalMs = -1;  // Table 2 (GTX 690)
+};
+
+struct StageRow {
+  std::string name;
+  double ms;
+};
+
+struct Result {
+  Case c;
+  int water = 0, cloth = 0;
+  double totalMs = 0, profiledMs = 0, wettingMs = 0;
+  double bytesPerParticle = 0;
+  std::vector<StageRow> stages;
+};
+
+// Table 2 of Shao et al. 2017: water, cloth, wetting ms, total ms per step on a GTX 690.
+std::vector<Case> table2Cases(const std::string& dir) {
+  struct Row {
+    const char* file;
+    double warmup, water, cloth, wet, total;
+  };
+  const Row rows[] = {
+      {"fig1_jet", 4.0, 25.1e3, 14.4e3, 5.2, 28.7},        {"fig3a_dry_drop", 0.5, 13.8e3, 14.4e3, 0.0, 21.6},
+      {"fig3b_wet_drop", 0.5, 22.4e3, 14.4e3, 4.9, 27.4},  {"fig5b_diffusion_nogravity", 0.5, 50.0e3, 10.0e3, 5.6, 42.5},
+      {"fig5c_diffusion_gravity", 0.5, 50.0e3, 10.0e3, 5.7, 42.9}, {"fig6a_emission", 1.5, 11.3e3, 14.4e3, 4.5, 20.2},
+      {"fig6b_emission", 1.5, 10.8e3, 14.4e3, 4.3, 19.8},  {"fig7_small", 1.0, 1.9e3, 2.5e3, 1.3, 5.2},
+      {"fig9a_ball", 1.0, 85.2e3, 14.4e3, 15.2, 67.8},     {"fig9b_ball_sticky", 1.0, 86.5e3, 14.4e3, 15.8, 68.5},
+  };
+  std::vector<Case> cases;
+  for (const Row& r : rows) {
+    Case c;
+    c.name = r.file;
+    c.scenePath = dir + "/" + r.file + ".xml";
+    c.warmupSeconds = r.warmup;
+    c.paperWater = r.water;
+    c.paperCloth = r.cloth;
+    c.paperWettingMs = r.wet;
+    c.paperTotalMs = r.total;
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+// "100k", "1M", "2.5M" -> particles.
+long long parseCount(const std::string& s) {
+  char* end = nullptr;
+  double v = std::strtod(s.c_str(), &end);
+  std::string unit = end ? end : "";
+  if (unit == "k" || unit == "K") v *= 1e3;
+  else if (unit == "M" || unit == "m") v *= 1e6;
+  else if (!unit.empty()) throw InputError("soak-bench: cannot read particle count '" + s + "' (use 100k, 1M, ...)");
+  if (!(v >= 1000)) throw InputError("soak-bench: particle count '" + s + "' must be at least 1000");
+  return (long long)v;
+}
+
+// A water block of about 3/4 n particles (spacing 0.02 m) falls 5 cm onto a
+// sheet of about n/4 vertices pinned at four corners, 1.3 times the block's width.
+Case scaleCase(long long n, int warmupSteps) {
+  const int side = std::max(2, int(std::lround(std::cbrt(0.75 * double(n)))));
+  const int verts = std::max(2, int(std::lround(std::sqrt(0.25 * double(n)))));
+  const double block = side * 0.02, width = 1.3 * block;
+  std::ostringstream x;
+  x << "<Scene>\n"
+    << "  <Simulation timeStep='0.015' clothSubsteps='1'/>\n"
+    << "  <Water/>\n"
+    << "  <Cloth origin='" << -width / 2 << " 1 " << -width / 2 << "' width='" << width << "' height='" << width
+    << "' cellsU='" << verts - 1 << "' cellsV='" << verts - 1 << "' pinCorners='u0v0 u1v0 u0v1 u1v1' tetherSlack='0.1'/>\n"
+    << "  <WaterBlock min='" << -block / 2 << " 1.05 " << -block / 2 << "' max='" << block / 2 << " "
+    << 1.05 + block << " " << block / 2 << "'/>\n"
+    << "  <Plane point='0 0 0' normal='0 1 0'/>\n"
+    << "  <WetCloth/>\n"
+    << "</Scene>\n";
+  Case c;
+  std::ostringstream name;
+  name << "scale " << (n >= 1000000 ? std::to_string(n / 1000000) + "M" : std::to_string(n / 1000) + "k");
+  c.name = name.str();
+  c.scenePath = "<scale " + std::to_string(n) + ">";
+  c.text = x.str();
+  c.warmupSteps = warmupSteps;
+  return c;
+}
+
+double nowMs() {
+  using namespace std::chrono;
+  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+Result runCase(const Case& c, Device device, int steps) {
+  const std::size_t before = deviceBytesInUse(device);
+  std::unique_ptr<LoadedScene> loaded = loadScene({c.scenePath, c.text, {}, {}}, device);
+  Simulation& sim = *loaded->sim;
+  const double dt = sim.settings.timeStep;
+  const int warm = c.warmupSteps + int(std::lround(c.warmupSeconds / dt));
+  for (int s = 0; s < warm; ++s) sim.step(false);
+  synchronize(device);
+
+  Result r;
+  r.c = c;
+  // Particle counts are known on the host (drips and drains change them):
+  // the table gives their mean over the timed steps.
+  const int cloth = sim.cloth.empty() ? 0 : sim.cloth.vertexCount();
+  double waterSum = 0.0;
+  const double t0 = nowMs();
+  for (int s = 0; s < steps; ++s) {
+    sim.step(false);
+    waterSum += sim.particles.count() - cloth;
+  }
+  synchronize(device);
+  r.totalMs = (nowMs() - t0) / steps;
+
+  sim.pipeline.resetTimings();
+  for (int s = 0; s < steps; ++s) sim.step(true);
+  for (const StageTiming& t : sim.pipeline.timings()) {
+    r.stages.push_back({t.name, t.meanMs()});
+    r.profiledMs += t.meanMs();
+    if (t.name.rfind("wet.", 0) == 0) r.wettingMs += t.meanMs();
+  }
+  r.cloth = cloth;
+  r.water = int(std::lround(waterSum / steps));
+  r.bytesPerParticle = double(deviceBytesInUse(device) - before) / double(std::max(1, sim.particles.count()));
+  return r;
+}
+
+std::string countText(double n) {
+  char b[32];
+  if (n >= 1e6) std::snprintf(b, sizeof b, "%.2fM", n / 1e6);
+  else std::snprintf(b, sizeof b, "%.1fk", n / 1e3);
+  return b;
+}
+
+void printTable(const std::vector<Result>& results, const std::string& deviceText, int steps) {
+  std::printf("\nsoak-bench on %s, %d timed steps per case after warm-up\n", deviceText.c_str(), steps);
+  std::printf("wetting = sum of the wet.* stages (profiled); total = plain step wall time; paper = Table 2, GTX 690\n\n");
+  std::printf("| scene | water | cloth | wetting ms | total ms | wetting share | steps/s | particle-steps/s | bytes/particle "
+              "| paper water | paper total ms | speed-up |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Result& r : results) {
+    const double n = r.water + r.cloth;
+    std::printf("| %s | %s | %s | %.3f | %.3f | %.1f %% | %.0f | %.3g | %.0f |", r.c.name.c_str(),
+                countText(r.water).c_str(), countText(r.cloth).c_str(), r.wettingMs, r.totalMs,
+                r.profiledMs > 0 ? 100.0 * r.wettingMs / r.profiledMs : 0.0, 1000.0 / r.totalMs,
+                n * 1000.0 / r.totalMs, r.bytesPerParticle);
+    if (r.c.paperTotalMs > 0)
+      std::printf(" %s | %.1f | %.1fx |\n", countText(r.c.paperWater).c_str(), r.c.paperTotalMs,
+                  r.c.paperTotalMs / r.totalMs);
+    else
+      std::printf(" - | - | - |\n");
+  }
+  std::printf("\nper-stage ms per step (profiled):\n\n| stage |");
+  for (const Result& r : results) std::printf(" %s |", r.c.name.c_str());
+  std::printf("\n|---|");
+  for (std::size_t i = 0; i < results.size(); ++i) std::printf("---|");
+  std::printf("\n");
+  std::vector<std::string> names;
+  for (const Result& r : results)
+    for (const StageRow& s : r.stages) {
+      bool seen = false;
+      for (const std::string& n : names) seen = seen || n == s.name;
+      if (!seen) names.push_back(s.name);
+    }
+  for (const std::string& name : names) {
+    std::printf("| %s |", name.c_str());
+    for (const Result& r : results) {
+      double ms = -1;
+      for (const StageRow& s : r.stages)
+        if (s.name == name) ms = s.ms;
+      if (ms < 0) std::printf(" - |");
+      else std::printf(" %.3f |", ms);
+    }
+    std::printf("\n");
+  }
+}
+
+void writeJson(const std::string& file, const std::vector<Result>& results, const std::string& deviceText, int steps) {
+  std::ofstream o(file);
+  if (!o) throw InputError("soak-bench: cannot write '" + file + "'");
+  o << "{\n  \"device\": \"" << deviceText << "\",\n  \"timed_steps\": " << steps << ",\n  \"cases\": [\n";
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const Result& r = results[i];
+    o << "    {\"scene\": \"" << r.c.name << "\", \"water\": " << r.water << ", \"cloth\": " << r.cloth
+      << ", \"wetting_ms\": " << r.wettingMs << ", \"total_ms\": " << r.totalMs
+      << ", \"profiled_total_ms\": " << r.profiledMs << ", \"steps_per_s\": " << 1000.0 / r.totalMs
+      << ", \"particle_steps_per_s\": " << (r.water + r.cloth) * 1000.0 / r.totalMs
+      << ", \"bytes_per_particle\": " << r.bytesPerParticle;
+    if (r.c.paperTotalMs > 0)
+      o << ", \"paper_total_ms\": " << r.c.paperTotalMs << ", \"paper_wetting_ms\": " << r.c.paperWettingMs
+        << ", \"speedup\": " << r.c.paperTotalMs / r.totalMs;
+    o << ", \"stages\": {";
+    for (std::size_t k = 0; k < r.stages.size(); ++k)
+      o << (k ? ", " : "") << "\"" << r.stages[k].name << "\": " << r.stages[k].ms;
+    o << "}}" << (i + 1 < results.size() ? "," : "") << "\n";
+  }
+  o << "  ]\n}\n";
+}
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+int usage() {
+  std::fprintf(stderr,
+               "usage: soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]\n"
+               "                  [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]\n");
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string deviceName = "auto", scenes = "Scenes", json, only, scale;
+  int steps = 50, warmupSteps = 20;
+  bool table2 = true;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) throw InputError("soak-bench: " + a + " needs a value");
+      return argv[++i];
+    };
+    try {
+      if (a == "--device") deviceName = next();
+      else if (a == "--scenes") scenes = next();
+      else if (a == "--only") only = next();
+      else if (a == "--scale") scale = next();
+      else if (a == "--steps") steps = std::stoi(next());
+      else if (a == "--warmup-steps") warmupSteps = std::stoi(next());
+      else if (a == "--json") json = next();
+      else if (a == "--no-table2") table2 = false;
+      else if (a == "--help" || a == "-h") return usage(), 0;
+      else return std::fprintf(stderr, "soak-bench: unknown argument '%s'\n", a.c_str()), usage();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 2;
+    }
+  }
+  try {
+    const Device device = resolveDevice(deviceName);
+    const std::string deviceText = device == Device::Cuda
+                                       ? "cuda (" + cudaDeviceDescription() + ")"
+                                       : "cpu (OpenMP, " + std::to_string(omp_get_max_threads()) + " threads)";
+    std::vector<Case> cases;
+    if (table2) {
+      const std::vector<std::string> wanted = splitList(only);
+      for (const Case& c : table2Cases(scenes)) {
+        bool take = wanted.empty();
+        for (const std::string& w : wanted) take = take || w == c.name;
+        if (take) cases.push_back(c);
+      }
+    }
+    for (const std::string& s : splitList(scale)) cases.push_back(scaleCase(parseCount(s), warmupSteps));
+    std::vector<Result> results;
+    for (const Case& c : cases) {
+      std::fprintf(stderr, "soak-bench: %s ...\n", c.name.c_str());
+      results.push_back(runCase(c, device, steps));
+      const Result& r = results.back();
+      std::fprintf(stderr, "soak-bench: %s: %d water + %d cloth, %.3f ms per step (wetting %.3f ms)\n",
+                   c.name.c_str(), r.water, r.cloth, r.totalMs, r.wettingMs);
+    }
+    printTable(results, deviceText, steps);
+    if (!json.empty()) writeJson(json, results, deviceText, steps);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
