@@ -44,7 +44,8 @@ std::vector<std::string> Pipeline::names() const {
   return n;
 }
 
-void Pipeline::run(Simulation& sim, Device device, bool profile) {
+void Pipeline::run(Simulation& sim, Device device, bool profile,
+                   const std::function<void(const std::string&)>& afterStage) {
   using Clock = std::chrono::steady_clock;
   for (std::size_t i = 0; i < stages_.size(); ++i) {
     auto t0 = Clock::now();
@@ -52,6 +53,7 @@ void Pipeline::run(Simulation& sim, Device device, bool profile) {
     if (profile) synchronize(device);
     timings_[i].totalMs += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     ++timings_[i].calls;
+    if (afterStage) afterStage(stages_[i].name);
   }
 }
 

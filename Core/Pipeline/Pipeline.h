@@ -37,7 +37,9 @@ class Pipeline {
 
   // Runs every stage once. With `profile`, device work is waited for after
   // each stage so its time is its own (slower, but honest on the GPU).
-  void run(Simulation& sim, Device device, bool profile);
+  // `afterStage`, where given, is called with each stage's name after it ran.
+  void run(Simulation& sim, Device device, bool profile,
+           const std::function<void(const std::string&)>& afterStage = {});
 
   const std::vector<StageTiming>& timings() const { return timings_; }
   void resetTimings();

@@ -4,9 +4,12 @@
 #include <cmath>
 
 #include "Output/FrameWriter.h"
+#include "Simulation/Instability.h"
 #include "Simulation/Simulation.h"
 
 namespace soak {
+
+Runner::Runner(Simulation& sim, FrameWriter* writer) : sim_(sim), writer_(writer), scratch_(sim.device()) {}
 
 int Runner::plannedFrames(const RunOptions& o) const {
   if (o.frames >= 0) return o.frames;
@@ -33,6 +36,8 @@ RunProgress Runner::run(const RunOptions& o, const std::function<void(const RunP
     }
     synchronize(sim_.device());
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    const Instability bad = findInstability(sim_, scratch_);
+    if (bad.found) throw InstabilityError(bad, describeInstability(bad, sim_.settings.maxSpeed));
     if (writer_) writer_->writeFrame(sim_, f, steps ? ms / steps : 0.0);
     p.frame = f;
     p.simTime = sim_.time();

@@ -1,6 +1,8 @@
 #pragma once
 #include <functional>
 
+#include "Backend/Buffer.h"
+
 namespace soak {
 
 class Simulation;
@@ -26,8 +28,11 @@ struct RunProgress {
 // the time step: a frame is written at the first step at or past its time.
 class Runner {
  public:
-  Runner(Simulation& sim, FrameWriter* writer) : sim_(sim), writer_(writer) {}
+  Runner(Simulation& sim, FrameWriter* writer);
   // Returns the final progress. `onFrame` is called after every frame.
+  // Before a frame is written the particles are checked (Instability.h): an
+  // unstable state throws InstabilityError and is not written, so the
+  // frames on disk are the sound ones.
   RunProgress run(const RunOptions& options, const std::function<void(const RunProgress&)>& onFrame = {});
   // Stop after the current frame (e.g. from a signal handler flag).
   void requestStop() { stop_ = true; }
@@ -37,6 +42,7 @@ class Runner {
  private:
   Simulation& sim_;
   FrameWriter* writer_;
+  Buffer<float> scratch_;
   volatile bool stop_ = false;
 };
 

@@ -1,5 +1,7 @@
 #include "Simulation/Simulation.h"
 
+#include "Simulation/Instability.h"
+
 #include <algorithm>
 
 #include "Backend/Primitives.h"
@@ -13,7 +15,7 @@ namespace soak {
 
 Simulation::Simulation(Device device)
     : particles(device), grid(device), cloth(device), fluid(device), device_(device), contactDelta_(device),
-      substepStart_(device), substepVelocity_(device), velocityFix_(device),
+      instabilityScratch_(device), substepStart_(device), substepVelocity_(device), velocityFix_(device),
       removeFlag_(device), removedMass_(device), removedCount_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
 Simulation::~Simulation() = default;
@@ -119,6 +121,9 @@ void Simulation::drainWater() {
       return;
     }
     const Vec3 x = p.position[i].xyz();
+    // A non-finite position is an instability, not water that left the
+    // domain: keep it for the check (Instability.h) to report.
+    if (!isFinite(x)) return;
     bool out = !(x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z);
     for (int k = 0; k < sinkCount && !out; ++k) {
       const Vec3 a = sinkBox[2 * k], b = sinkBox[2 * k + 1];
@@ -141,7 +146,14 @@ void Simulation::step(bool profile) {
     colliderBuffer_.upload(colliders);
     collidersDirty_ = false;
   }
-  pipeline.run(*this, device_, profile);
+  if (checkStages) {
+    pipeline.run(*this, device_, profile, [this](const std::string& stage) {
+      const Instability s = findInstability(*this, instabilityScratch_, stage);
+      if (s.found) throw InstabilityError(s, describeInstability(s, settings.maxSpeed));
+    });
+  } else {
+    pipeline.run(*this, device_, profile);
+  }
   ++stepIndex_;
   time_ = double(stepIndex_) * settings.timeStep;
 }

@@ -58,6 +58,10 @@ class Simulation {
   // Passes of cloth contact (self and cloth-cloth) per step.
   int contactPasses = 2;
 
+  // Check for an instability after every stage (slow; names the stage).
+  // Throws InstabilityError.
+  bool checkStages = false;
+
   long long stepIndex() const { return stepIndex_; }
   double time() const { return time_; }
   // Largest support radius of any particle (cell size of the grid). Modules
@@ -81,6 +85,7 @@ class Simulation {
   void addCoreStages();
   Device device_;
   Buffer<Vec3> contactDelta_;
+  Buffer<float> instabilityScratch_;
   Buffer<Float4> substepStart_;  // cloth sub-steps
   Buffer<Vec3> substepVelocity_, velocityFix_;
   Buffer<int> removeFlag_;

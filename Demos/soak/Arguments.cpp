@@ -25,6 +25,8 @@ const char* kUsage =
     "  --threads N               CPU threads (default: all cores)\n"
     "  --profile                 print mean milliseconds per stage at the end\n"
     "  --quiet                   no progress output\n"
+    "  --check-stages            check for NaN and runaway speed after every stage, not once per\n"
+    "                            frame (slower; an instability is then reported with its stage)\n"
     "\n"
     "exit codes: 0 success, 1 internal error, 2 bad input (nothing written),\n"
     "            3 device unavailable or failed, 4 simulation unstable, 130 interrupted\n";
@@ -63,6 +65,7 @@ RunArguments parseRunArguments(const std::vector<std::string>& args) {
       r.threads = static_cast<int>(t);
     } else if (a == "--profile") r.profile = true;
     else if (a == "--quiet" || a == "-q") r.quiet = true;
+    else if (a == "--check-stages") r.checkStages = true;
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see soak help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene per run)");

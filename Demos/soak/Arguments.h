@@ -24,6 +24,7 @@ struct RunArguments {
   std::vector<std::string> plugins;
   bool profile = false;
   bool quiet = false;
+  bool checkStages = false;
   int threads = 0;
 };
 

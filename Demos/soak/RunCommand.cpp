@@ -11,6 +11,7 @@
 #include "Plugins/PluginLoader.h"
 #include "ProgressReport.h"
 #include "Scene/Scene.h"
+#include "Simulation/Instability.h"
 #include "Simulation/LoadedScene.h"
 #include "Simulation/Runner.h"
 #include "Simulation/Simulation.h"
@@ -75,10 +76,20 @@ int runCommand(const RunArguments& args) {
   }
   std::signal(SIGINT, onSigint);
   ProgressReport progress(args.quiet);
-  RunProgress result = writingRunner.run(options, [&](const RunProgress& p) {
-    progress.update(p);
-    if (g_interrupted) writingRunner.requestStop();
-  });
+  sim.checkStages = args.checkStages;
+  RunProgress result;
+  try {
+    result = writingRunner.run(options, [&](const RunProgress& p) {
+      progress.update(p);
+      if (g_interrupted) writingRunner.requestStop();
+    });
+  } catch (const InstabilityError& e) {
+    progress.finish();
+    std::fprintf(stderr, "soak: %s\n      frames 0-%d (t <= %.4f s) are kept in %s%s\n", e.what(),
+                 writer.framesWritten() - 1, (writer.framesWritten() - 1) / sim.settings.frameRate, out.c_str(),
+                 sim.checkStages ? "" : "; run again with --check-stages to name the stage where it starts");
+    return kExitUnstable;
+  }
   progress.finish();
   std::signal(SIGINT, SIG_DFL);
 

@@ -91,3 +91,27 @@ TEST(Cli, UnwritableOutputFolderIsAnInputError) {
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("output folder"), std::string::npos) << r.output;
 }
+
+TEST(Cli, RunawaySpeedStopsTheRunWithItsOwnCodeAndKeepsEarlierFrames) {
+  // Falling particles pass 2 m/s after about 0.2 s: with maxSpeed = 2 that is
+  // an instability. The run stops before writing the frame that shows it.
+  const std::string scene = std::string(SOAK_SOURCE_DIR) + "/Scenes/falling_particles.xml";
+  std::string dir = tempDir("unstable");
+  Result r = runSoak("run " + scene + " -o " + dir + " --quiet --device cpu --set Simulation.maxSpeed=2");
+  EXPECT_EQ(r.code, 4) << r.output;
+  EXPECT_NE(r.output.find("above Simulation.maxSpeed = 2 m/s"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("water particle"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--check-stages"), std::string::npos) << r.output;
+  // 2 m/s is reached at t = 0.204 s: frames 0-5 (t <= 0.167 s at 30/s) are written, 6 is not.
+  EXPECT_TRUE(exists(dir + "/water/water_000005.vtu"));
+  EXPECT_FALSE(exists(dir + "/water/water_000006.vtu"));
+  std::ifstream pvd(dir + "/water.pvd");
+  std::string text((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("water_000005.vtu"), std::string::npos);
+  EXPECT_NE(text.find("</VTKFile>"), std::string::npos) << "the collection is not closed";
+  // With --check-stages the report names the stage: gravity enters in predict.
+  Result staged = runSoak("run " + scene + " -o " + tempDir("unstable2") +
+                          " --quiet --device cpu --check-stages --set Simulation.maxSpeed=2");
+  EXPECT_EQ(staged.code, 4) << staged.output;
+  EXPECT_NE(staged.output.find("after stage predict"), std::string::npos) << staged.output;
+}
