@@ -144,7 +144,9 @@ void FluidSolver::solve(Simulation& sim) {
   const WaterSettings ws = sim.water;
   const float rho0 = ws.restDensity, m0 = ws.particleMass;
   const float eps = ws.relaxation * restDenominator_;
-  const float corrK = ws.artificialPressure * rho0 * rho0 / restDenominator_;
+  // A lattice sparser than h has no neighbours and a zero denominator: then
+  // there is no artificial pressure (and no relaxation to scale).
+  const float corrK = restDenominator_ > 0.f ? ws.artificialPressure * rho0 * rho0 / restDenominator_ : 0.f;
   const float corrQ = ws.artificialPressureRadius;
   const Collider* colliders = sim.deviceColliders();
   const int colliderCount = int(sim.colliders.size());
@@ -197,7 +199,7 @@ void FluidSolver::solve(Simulation& sim) {
       rho[i] = dens * m0;
       const float C = fmaxf(rho[i] / rho0 - 1.f, 0.f);  // unilateral: compression only
       const float G = sumG2 + lengthSquared(gradSelf) / mui;
-      lam[i] = -C * rho0 * rho0 / (G + eps);
+      lam[i] = G + eps > 0.f ? -C * rho0 * rho0 / (G + eps) : 0.f;  // a lone particle: nothing to solve
     }, "fluid.lambda");
     applyDensityCorrections(device_, p, g, lam, volume, delta, k);
     projectColliders(device_, p, sim.deviceColliders(), int(sim.colliders.size()), kCollisionRadiusScale,

@@ -23,6 +23,7 @@ Instability findInstability(Simulation& sim, Buffer<float>& scratch, const std::
   if (reduceMax(sim.device(), bad, p.count) <= 0.f) return s;
   const std::vector<float> flags = scratch.download();
   const std::vector<Float4> x = sim.particles.downloadPositions();
+  const std::vector<Float4> xp = sim.particles.downloadPredicted();
   const std::vector<Vec3> v = sim.particles.downloadVelocities();
   const std::vector<int> ids = sim.particles.downloadIds(), phases = sim.particles.downloadPhases();
   // The worst one: a non-finite value first, else the fastest.
@@ -30,7 +31,7 @@ Instability findInstability(Simulation& sim, Buffer<float>& scratch, const std::
   float worstSpeed = -1.f;
   for (int i = 0; i < p.count; ++i) {
     if (flags[i] <= 0.f) continue;
-    const bool fin = isFinite(x[i].xyz()) && isFinite(v[i]);
+    const bool fin = isFinite(x[i].xyz()) && isFinite(xp[i].xyz()) && isFinite(v[i]);
     const float speed = fin ? length(v[i]) : INFINITY;
     if (speed > worstSpeed) {
       worstSpeed = speed;
@@ -45,7 +46,7 @@ Instability findInstability(Simulation& sim, Buffer<float>& scratch, const std::
   s.cloth = isCloth(phases[worst]);
   s.position = x[worst].xyz();
   s.velocity = v[worst];
-  s.finite = isFinite(s.position) && isFinite(s.velocity);
+  s.finite = isFinite(s.position) && isFinite(xp[worst].xyz()) && isFinite(s.velocity);
   s.speed = s.finite ? length(s.velocity) : INFINITY;
   return s;
 }
@@ -58,7 +59,7 @@ std::string describeInstability(const Instability& s, float maxSpeed) {
     std::snprintf(where, sizeof where, "in step %lld (from t = %.4f s), after stage %s", s.step + 1, s.time,
                   s.stage.c_str());
   if (!s.finite)
-    std::snprintf(what, sizeof what, "%s particle %d has a non-finite position or velocity", s.cloth ? "cloth" : "water",
+    std::snprintf(what, sizeof what, "%s particle %d has a non-finite position, predicted position or velocity", s.cloth ? "cloth" : "water",
                   s.id);
   else
     std::snprintf(what, sizeof what,
