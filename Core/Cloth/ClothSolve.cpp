@@ -107,11 +107,8 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
       const int i = c.vertexSlot[v];
       const Float4 xp = p.predicted[i];
       if (xp.w == 0.f) return;
-      const Vec3 x0 = s.start[i].xyz();
       const float r = collisionRadiusScale * p.radius[i];
-      Vec3 q = xp.xyz();
-      for (int k = 0; k < colliderCount; ++k) q = projectOutOfCollider(colliders[k], x0, q, r, h);
-      p.predicted[i] = Float4(q, xp.w);
+      p.predicted[i] = Float4(projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, h), xp.w);
     }, "cloth.substep.colliders");
     contacts(substepView);
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {

@@ -99,4 +99,10 @@ SOAK_INLINE Vec3 projectOutOfCollider(const Collider& c, Vec3 x, Vec3 xp, float 
   return corrected - tangential * c.friction;
 }
 
+// Every collider in turn (each sees the previous one's correction).
+SOAK_INLINE Vec3 projectOutOfColliders(const Collider* colliders, int count, Vec3 x, Vec3 xp, float r, float dt) {
+  for (int c = 0; c < count; ++c) xp = projectOutOfCollider(colliders[c], x, xp, r, dt);
+  return xp;
+}
+
 }  // namespace soak

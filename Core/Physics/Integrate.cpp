@@ -27,9 +27,7 @@ void projectColliders(Device d, ParticleView p, const Collider* colliders, int c
     if (xp.w == 0.f) return;
     const Vec3 x = p.position[i].xyz();
     const float r = radiusScale * p.radius[i];
-    Vec3 q = xp.xyz();
-    for (int c = 0; c < colliderCount; ++c) q = projectOutOfCollider(colliders[c], x, q, r, dt);
-    p.predicted[i] = Float4(q, xp.w);
+    p.predicted[i] = Float4(projectOutOfColliders(colliders, colliderCount, x, xp.xyz(), r, dt), xp.w);
   }, "colliders");
 }
 

@@ -2,14 +2,18 @@
 
 namespace soak {
 
+void loadStandardPlugins(PluginLoader& loader, const std::vector<std::string>& extra) {
+  loader.addSearchDirectory(defaultPluginDirectory());
+  loader.loadDirectory(defaultPluginDirectory());
+  for (const std::string& p : extra) loader.loadFile(p, "--plugin");
+}
+
 std::unique_ptr<LoadedScene> loadScene(const SceneSource& source, Device device) {
   auto run = std::make_unique<LoadedScene>();
   registerCoreElements(run->registry);
   run->loader = std::make_unique<PluginLoader>(run->registry);
   PluginLoader& loader = *run->loader;
-  loader.addSearchDirectory(defaultPluginDirectory());
-  loader.loadDirectory(defaultPluginDirectory());
-  for (const std::string& p : source.plugins) loader.loadFile(p, "--plugin");
+  loadStandardPlugins(loader, source.plugins);
   const PluginRequest request = [&](const std::string& what, bool isPath, const std::string& where) {
     if (isPath) loader.loadFile(what, where);
     else loader.loadByName(what, where);

@@ -29,6 +29,9 @@ struct SceneSource {
   std::vector<std::string> plugins;    // extra plugin libraries (--plugin)
 };
 
+// The plugins of the default plugin folder, then `extra` (--plugin paths).
+void loadStandardPlugins(PluginLoader& loader, const std::vector<std::string>& extra);
+
 std::unique_ptr<LoadedScene> loadScene(const SceneSource& source, Device device);
 
 }  // namespace soak

@@ -29,12 +29,6 @@ std::string sceneStem(const std::string& path) {
   return dot == std::string::npos ? name : name.substr(0, dot);
 }
 
-void loadStandardPlugins(PluginLoader& loader, const std::vector<std::string>& extra) {
-  loader.addSearchDirectory(defaultPluginDirectory());
-  loader.loadDirectory(defaultPluginDirectory());
-  for (const std::string& p : extra) loader.loadFile(p, "--plugin");
-}
-
 void printProfile(const Simulation& sim) {
   double total = 0.0, wetting = 0.0;
   for (const StageTiming& t : sim.pipeline.timings()) {
