@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iomanip>
+#include <sstream>
 
 #include "Base/Error.h"
 #include "Output/VtkFiles.h"
@@ -31,9 +32,10 @@ void makeDirectories(const std::string& path) {
     throw InputError("output folder '" + path + "' is not writable: " + std::strerror(errno));
 }
 
-FrameWriter::FrameWriter(const std::string& directory, const std::string& sceneText)
+FrameWriter::FrameWriter(const std::string& directory, const std::string& sceneText, Start start)
     : dir_(directory), water_(directory + "/water.pvd") {
   makeDirectories(dir_ + "/water");
+  if (start == Start::Resume) return;
   writeFileAtomically(dir_ + "/scene.xml", sceneText);
   stats_.open(dir_ + "/stats.csv", std::ios::out | std::ios::trunc);
   if (!stats_) throw InputError("cannot write '" + dir_ + "/stats.csv'");
@@ -140,15 +142,20 @@ void FrameWriter::writeCloth(Simulation& sim, int frame) {
 }
 
 void FrameWriter::writeStatsRow(const StatsRow& row) {
+  std::ostringstream text;
   if (statsColumns_.empty()) {
     for (const auto& c : row.values()) statsColumns_.push_back(c.first);
-    for (std::size_t i = 0; i < statsColumns_.size(); ++i) stats_ << (i ? "," : "") << statsColumns_[i];
-    stats_ << "\n";
+    for (std::size_t i = 0; i < statsColumns_.size(); ++i) text << (i ? "," : "") << statsColumns_[i];
+    text << "\n";
   }
   for (std::size_t i = 0; i < row.values().size(); ++i)
-    stats_ << (i ? "," : "") << std::setprecision(10) << row.values()[i].second;
-  stats_ << "\n";
+    text << (i ? "," : "") << std::setprecision(10) << row.values()[i].second;
+  text << "\n";
+  const std::string bytes = text.str();
+  stats_ << bytes;
   stats_.flush();
+  if (!stats_) throw std::runtime_error("cannot write '" + dir_ + "/stats.csv'");
+  statsBytes_ += bytes.size();
 }
 
 }  // namespace soak

@@ -12,6 +12,11 @@ void PvdCollection::add(double time, const std::string& file) {
   write();
 }
 
+void PvdCollection::restore(std::vector<Entry> entries) {
+  entries_ = std::move(entries);
+  write();
+}
+
 void PvdCollection::write() const {
   std::ostringstream o;
   o << "<?xml version=\"1.0\"?>\n"

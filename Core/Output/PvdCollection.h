@@ -14,6 +14,10 @@ class PvdCollection {
   void add(double time, const std::string& file);
   const std::string& path() const { return path_; }
   std::size_t size() const { return entries_.size(); }
+  using Entry = std::pair<double, std::string>;  // time, file
+  const std::vector<Entry>& entries() const { return entries_; }
+  // Replaces the list (resuming from a checkpoint) and rewrites the file.
+  void restore(std::vector<Entry> entries);
 
  private:
   void write() const;

@@ -9,6 +9,9 @@
 
 namespace soak {
 
+class StateWriter;
+class StateReader;
+
 // Raw pointers into the particle arrays, passed by value to solver functions
 // and kernels. Index i is a slot; slots are reordered every step (cell sort).
 struct ParticleView {
@@ -72,6 +75,11 @@ class ParticleState {
   std::vector<int> downloadPhases() const { return phase_.download(); }
   std::vector<int> downloadIds() const { return id_.download(); }
   std::vector<float> downloadChannel(int index) const { return channels_[index].data.download(); }
+
+  // Checkpoints: every array and channel of the live slots, in slot order.
+  // loadState needs the same channels (by name, in order) as were saved.
+  void saveState(StateWriter& out) const;
+  void loadState(StateReader& in);
 
   // Bytes of device memory the particle arrays hold.
   std::size_t bytes() const;

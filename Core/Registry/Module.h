@@ -7,6 +7,8 @@ namespace soak {
 
 class Simulation;
 class Pipeline;
+class StateWriter;
+class StateReader;
 
 // One row of stats.csv, filled column by column (order is kept).
 class StatsRow {
@@ -35,6 +37,12 @@ class Module {
   virtual void addStats(Simulation&, StatsRow&) {}
   // Called before every step (host side, e.g. to move a scripted collider).
   virtual void beforeStep(Simulation&) {}
+  // Checkpoints (soak run --checkpoint-every, --resume): state that changes
+  // during the run and lives outside the particle arrays and their channels
+  // (counters, particles queued for the next step). Read back in the order
+  // written; a module that keeps no such state writes nothing.
+  virtual void saveState(StateWriter&) const {}
+  virtual void loadState(StateReader&) {}
 };
 
 }  // namespace soak

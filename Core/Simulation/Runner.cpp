@@ -23,10 +23,12 @@ RunProgress Runner::run(const RunOptions& o, const std::function<void(const RunP
   p.frames = plannedFrames(o);
   p.endTime = p.frames / sim_.settings.frameRate;
   const auto start = Clock::now();
-  if (writer_) writer_->writeFrame(sim_, 0, 0.0);
+  p.frame = o.startFrame;
+  p.simTime = sim_.time();
+  if (o.startFrame == 0 && writer_) writer_->writeFrame(sim_, 0, 0.0);
   if (onFrame) onFrame(p);
   const long long firstStep = sim_.stepIndex();
-  for (int f = 1; f <= p.frames && !stop_; ++f) {
+  for (int f = o.startFrame + 1; f <= p.frames && !stop_; ++f) {
     const double target = f / sim_.settings.frameRate;
     const auto t0 = Clock::now();
     int steps = 0;
@@ -44,8 +46,15 @@ RunProgress Runner::run(const RunOptions& o, const std::function<void(const RunP
     p.steps = sim_.stepIndex() - firstStep;
     p.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     p.stepsPerSecond = p.wallSeconds > 0 ? double(p.steps) / p.wallSeconds : 0.0;
-    p.etaSeconds = p.frame > 0 ? p.wallSeconds / p.frame * (p.frames - p.frame) : 0.0;
+    const int done = p.frame - o.startFrame;
+    p.etaSeconds = done > 0 ? p.wallSeconds / done * (p.frames - p.frame) : 0.0;
     if (onFrame) onFrame(p);
+    if (writer_ && o.checkpointEvery > 0 && (f % o.checkpointEvery == 0 || f == p.frames || stop_)) {
+      CheckpointHeader h = o.checkpointHeader;
+      h.frame = f;
+      h.plannedFrames = p.frames;
+      writeCheckpoint(o.checkpointPath, h, *writer_, sim_);
+    }
   }
   return p;
 }

@@ -1,7 +1,9 @@
 #pragma once
 #include <functional>
+#include <string>
 
 #include "Backend/Buffer.h"
+#include "Checkpoint/Checkpoint.h"
 
 namespace soak {
 
@@ -12,6 +14,15 @@ struct RunOptions {
   int frames = -1;     // output frames after frame 0; -1: from duration
   double time = -1.0;  // simulated seconds; -1: from the scene
   bool profile = false;
+  // Resuming: the frame the checkpoint was written at (frames up to it are
+  // on disk; the run continues with the next). 0: a fresh run.
+  int startFrame = 0;
+  // Write a checkpoint every N frames (0: never), and also after the last
+  // frame and when stopped early, to `checkpointPath`. `checkpointHeader`
+  // carries the scene; the runner fills in the frames.
+  int checkpointEvery = 0;
+  std::string checkpointPath;
+  CheckpointHeader checkpointHeader;
 };
 
 struct RunProgress {

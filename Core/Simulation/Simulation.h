@@ -15,6 +15,9 @@
 
 namespace soak {
 
+class StateWriter;
+class StateReader;
+
 // Everything one run holds: settings, particles, the neighbour grid,
 // colliders, the modules made from the scene, and the step pipeline.
 class Simulation {
@@ -38,6 +41,12 @@ class Simulation {
 
   // Counts and water budget for stats.csv (one reduction per call).
   StatsRow collectStats();
+
+  // Checkpoints: step counter, water budget, particles and every module's
+  // state. loadState expects a simulation built from the same scene
+  // (initialize() done) and refuses one that does not match.
+  void saveState(StateWriter& out) const;
+  void loadState(StateReader& in);
 
   SimulationSettings settings;
   WaterSettings water;

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "Base/Error.h"
+#include "Checkpoint/StateStream.h"
 #include "Registry/ModuleRegistry.h"
 #include "Simulation/ElementGroups.h"
 #include "Simulation/Simulation.h"
@@ -68,6 +69,9 @@ class NozzleModule : public Module {
     sim.particles.append(batch);
     sim.emittedWaterMass += double(batch.size()) * double(sim.water.particleMass);
   }
+  // How far the water has moved since the last layer: the phase of the jet.
+  void saveState(StateWriter& out) const override { out.put<double>(travelled_); }
+  void loadState(StateReader& in) override { travelled_ = in.get<double>(); }
 
  private:
   ElementParams p_;

@@ -11,6 +11,7 @@ const char* kUsage =
     "\n"
     "commands:\n"
     "  run SCENE.xml [options]   simulate a scene and write ParaView files\n"
+    "  run --resume DIR [opts]   continue a run from its last checkpoint (DIR/checkpoint.soak)\n"
     "  params                    print every scene element and parameter (Markdown)\n"
     "  version                   print the version and the backends built\n"
     "  help                      this text\n"
@@ -27,6 +28,10 @@ const char* kUsage =
     "  --quiet                   no progress output\n"
     "  --check-stages            check for NaN and runaway speed after every stage, not once per\n"
     "                            frame (slower; an instability is then reported with its stage)\n"
+    "  --checkpoint-every N      write DIR/checkpoint.soak every N frames, after the last frame\n"
+    "                            and when interrupted (the latest replaces the one before)\n"
+    "  --resume DIR              continue the run in DIR from its checkpoint; --frames or --time\n"
+    "                            may extend it; the scene is DIR's scene.xml, unchanged\n"
     "\n"
     "exit codes: 0 success, 1 internal error, 2 bad input (nothing written),\n"
     "            3 device unavailable or failed, 4 simulation unstable, 130 interrupted\n";
@@ -66,11 +71,22 @@ RunArguments parseRunArguments(const std::vector<std::string>& args) {
     } else if (a == "--profile") r.profile = true;
     else if (a == "--quiet" || a == "-q") r.quiet = true;
     else if (a == "--check-stages") r.checkStages = true;
+    else if (a == "--checkpoint-every") {
+      double n = toNumber(a, value());
+      if (n < 1 || n != static_cast<int>(n)) throw InputError("--checkpoint-every must be a positive integer");
+      r.checkpointEvery = static_cast<int>(n);
+    } else if (a == "--resume") r.resume = value();
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see soak help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene per run)");
   }
-  if (r.scene.empty()) throw InputError("soak run: no scene file given (usage: soak run SCENE.xml [options])");
+  if (!r.resume.empty()) {
+    if (!r.scene.empty()) throw InputError("--resume continues DIR's own scene: give no scene file with it");
+    if (!r.overrides.empty()) throw InputError("--resume cannot take --set: the resumed run must be the same scene");
+    if (!r.output.empty()) throw InputError("--resume writes into DIR itself: give no --output with it");
+  } else if (r.scene.empty()) {
+    throw InputError("soak run: no scene file given (usage: soak run SCENE.xml [options])");
+  }
   if (r.frames >= 0 && r.time >= 0) throw InputError("give --frames or --time, not both");
   return r;
 }

@@ -26,6 +26,8 @@ struct RunArguments {
   bool quiet = false;
   bool checkStages = false;
   int threads = 0;
+  int checkpointEvery = 0;  // 0: no checkpoints
+  std::string resume;       // output folder of a run to continue
 };
 
 // Parses the arguments after "run". Throws InputError with usage help.

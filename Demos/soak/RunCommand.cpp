@@ -4,9 +4,14 @@
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
 #include "Base/Error.h"
+#include "Checkpoint/Checkpoint.h"
 #include "Output/FrameWriter.h"
 #include "Plugins/PluginLoader.h"
 #include "ProgressReport.h"
@@ -20,7 +25,19 @@ namespace soak::cli {
 
 namespace {
 volatile std::sig_atomic_t g_interrupted = 0;
-void onSigint(int) { g_interrupted = 1; }
+// SIGINT or SIGTERM: finish the frame under way, write it (and a checkpoint
+// when asked for), then stop. A second signal ends the program at once.
+void onInterrupt(int signal) {
+  g_interrupted = 1;
+  std::signal(signal, SIG_DFL);
+}
+
+// The collections a run writes, for the closing message.
+std::string pvdList(const Simulation& sim, const std::string& out) {
+  std::string list = out + "/water.pvd";
+  for (const ClothObject& c : sim.cloth.objects()) list += " " + out + "/cloth_" + c.name + ".pvd";
+  return list;
+}
 
 std::string sceneStem(const std::string& path) {
   std::size_t slash = path.find_last_of('/');
@@ -45,12 +62,44 @@ void printProfile(const Simulation& sim) {
 }
 }  // namespace
 
+namespace {
+std::string readWholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read the run's scene file", path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string absolutePath(const std::string& path) {
+  char* real = ::realpath(path.c_str(), nullptr);
+  if (!real) return path;  // loadScene reports a missing file with its own message
+  std::string result(real);
+  std::free(real);
+  return result;
+}
+}  // namespace
+
 int runCommand(const RunArguments& args) {
   if (args.threads > 0) omp_set_num_threads(args.threads);
   // Everything that can fail because of the input happens before the output
-  // folder is touched: parse, validate, build the simulation.
+  // folder is touched: parse, validate, build the simulation (and, when
+  // resuming, read and verify the checkpoint).
   const Device device = resolveDevice(args.device);
-  std::unique_ptr<LoadedScene> loaded = loadScene({args.scene, "", args.overrides, args.plugins}, device);
+  SceneSource source{args.scene, "", args.overrides, args.plugins};
+  std::string out = args.output.empty() ? "soak-out/" + sceneStem(args.scene) : args.output;
+  std::optional<Checkpoint> checkpoint;
+  if (!args.resume.empty()) {
+    out = args.resume;
+    checkpoint = Checkpoint::read(out + "/" + kCheckpointFile);
+    const CheckpointHeader& h = checkpoint->header();
+    if (readWholeFile(out + "/scene.xml") != h.sceneText)
+      throw InputError("scene.xml differs from the scene the checkpoint was written for; a resumed run continues "
+                       "the same scene (start a new run to change it)",
+                       out + "/scene.xml");
+    source = {h.scenePath, h.sceneText, {}, args.plugins};
+  }
+  std::unique_ptr<LoadedScene> loaded = loadScene(source, device);
   Simulation& sim = *loaded->sim;
   const Scene& scene = loaded->scene;
 
@@ -58,17 +107,40 @@ int runCommand(const RunArguments& args) {
   options.frames = args.frames;
   options.time = args.time;
   options.profile = args.profile;
+  options.checkpointEvery = args.checkpointEvery;
+  options.checkpointPath = out + "/" + kCheckpointFile;
+  options.checkpointHeader.scenePath = checkpoint ? checkpoint->header().scenePath : absolutePath(args.scene);
+  options.checkpointHeader.sceneText = checkpoint ? checkpoint->header().sceneText : scene.textAsRun();
+  options.checkpointHeader.device = deviceName(device);
+  if (checkpoint) {
+    const CheckpointHeader& h = checkpoint->header();
+    options.startFrame = h.frame;
+    if (options.frames < 0 && options.time < 0) options.frames = h.plannedFrames;
+    if (options.checkpointEvery == 0) options.checkpointEvery = h.checkpointEvery;
+  }
+  options.checkpointHeader.checkpointEvery = options.checkpointEvery;
 
-  const std::string out = args.output.empty() ? "soak-out/" + sceneStem(args.scene) : args.output;
-  FrameWriter writer(out, scene.textAsRun());
+  FrameWriter writer(out, scene.textAsRun(), checkpoint ? FrameWriter::Start::Resume : FrameWriter::Start::Fresh);
   Runner writingRunner(sim, &writer);
+  if (checkpoint) {
+    const int planned = writingRunner.plannedFrames(options);
+    if (planned <= options.startFrame)
+      throw InputError("the run already reached frame " + std::to_string(options.startFrame) +
+                       "; give --frames N (N > " + std::to_string(options.startFrame) + ") or --time to extend it",
+                       out + "/" + kCheckpointFile);
+    checkpoint->restore(writer, sim);
+    if (!args.quiet)
+      std::fprintf(stderr, "soak: resuming %s at frame %d (t = %.4f s, step %lld), written on %s\n", out.c_str(),
+                   options.startFrame, sim.time(), sim.stepIndex(), checkpoint->header().device.c_str());
+  }
 
   if (!args.quiet) {
-    std::fprintf(stderr, "soak: %s on %s%s, %d particles, dt=%g s, %d frames -> %s\n", args.scene.c_str(),
+    std::fprintf(stderr, "soak: %s on %s%s, %d particles, dt=%g s, %d frames -> %s\n", scene.path().c_str(),
                  deviceName(device), device == Device::Cuda ? (" (" + cudaDeviceDescription() + ")").c_str() : "",
                  sim.particles.count(), double(sim.settings.timeStep), writingRunner.plannedFrames(options), out.c_str());
   }
-  std::signal(SIGINT, onSigint);
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onInterrupt);
   ProgressReport progress(args.quiet);
   sim.checkStages = args.checkStages;
   RunProgress result;
@@ -86,13 +158,14 @@ int runCommand(const RunArguments& args) {
   }
   progress.finish();
   std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
 
   if (!args.quiet) {
     std::fprintf(stderr,
                  "soak: %s: %d frames, %lld steps, %.1f s wall, %.1f steps/s; output in %s\n"
-                 "      open in ParaView: paraview %s/water.pvd\n",
+                 "      open in ParaView: paraview %s\n",
                  g_interrupted ? "interrupted" : "done", writer.framesWritten(), result.steps, result.wallSeconds,
-                 result.stepsPerSecond, out.c_str(), out.c_str());
+                 result.stepsPerSecond, out.c_str(), pvdList(sim, out).c_str());
   }
   if (args.profile) printProfile(sim);
   return g_interrupted ? kExitInterrupted : kExitOk;

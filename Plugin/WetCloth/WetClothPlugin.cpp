@@ -6,6 +6,7 @@
 
 #include "Backend/Primitives.h"
 #include "Base/Error.h"
+#include "Checkpoint/StateStream.h"
 #include "Pipeline/Pipeline.h"
 #include "Plugins/PluginApi.h"
 #include "Simulation/Simulation.h"
@@ -67,6 +68,21 @@ class WetClothModule : public Module {
     sim.particles.append(pendingDrips_);
     pendingDrips_.clear();
     pendingDripMass_ = 0.0;
+  }
+
+  // Drips queued for the next step, the drip counter, and whether the
+  // initial saturation was already given (the held water is a particle channel).
+  void saveState(StateWriter& out) const override {
+    out.putVector(pendingDrips_);
+    out.put<double>(pendingDripMass_);
+    out.put<std::int64_t>(dripsSpawned_);
+    out.put<std::int32_t>(initialised_ ? 1 : 0);
+  }
+  void loadState(StateReader& in) override {
+    pendingDrips_ = in.getVector<ParticleInit>();
+    pendingDripMass_ = in.get<double>();
+    dripsSpawned_ = in.get<std::int64_t>();
+    initialised_ = in.get<std::int32_t>() != 0;
   }
 
   void addStats(Simulation& sim, StatsRow& row) override {

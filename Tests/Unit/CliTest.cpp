@@ -1,36 +1,17 @@
 // The soak program as a user meets it: exit codes, messages, nothing written on bad input.
 #include <gtest/gtest.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <fstream>
 #include <string>
 
+#include "SoakProcess.h"
+
 namespace {
-struct Result {
-  int code;
-  std::string output;
-};
-Result runSoak(const std::string& args) {
-  std::string cmd = std::string(SOAK_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[512];
-  while (p && fgets(buf, sizeof(buf), p)) out += buf;
-  int status = p ? pclose(p) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-std::string tempDir(const std::string& name) {
-  std::string d = ::testing::TempDir() + "soak_cli_" + name;
-  std::system(("rm -rf " + d).c_str());
-  return d;
-}
-bool exists(const std::string& path) {
-  struct stat st {};
-  return stat(path.c_str(), &st) == 0;
-}
-void writeFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+using Result = soak::test::SoakResult;
+using soak::test::runSoak;
+std::string tempDir(const std::string& name) { return soak::test::freshTempPath("cli_" + name); }
+bool exists(const std::string& path) { return soak::test::pathExists(path); }
+void writeFile(const std::string& path, const std::string& text) { soak::test::writeWholeFile(path, text); }
 }  // namespace
 
 TEST(Cli, TypoInSceneFailsWithLineAndNothingWritten) {

@@ -1,0 +1,52 @@
+#pragma once
+// Running the soak program from a test, as a user would: its exit code and
+// what it printed; temporary folders; whole files.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace soak::test {
+
+struct SoakResult {
+  int code;  // exit code; -1 if killed by a signal
+  std::string output;
+};
+
+inline SoakResult runSoak(const std::string& args) {
+  const std::string cmd = std::string(SOAK_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[512];
+  while (p && fgets(buf, sizeof(buf), p)) out += buf;
+  const int status = p ? pclose(p) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+// A fresh (removed) path under the test temp folder.
+inline std::string freshTempPath(const std::string& name) {
+  const std::string d = ::testing::TempDir() + "soak_" + name;
+  std::system(("rm -rf '" + d + "'").c_str());
+  return d;
+}
+
+inline bool pathExists(const std::string& path) {
+  struct stat st {};
+  return stat(path.c_str(), &st) == 0;
+}
+
+inline std::string readWholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+inline void writeWholeFile(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+}  // namespace soak::test
