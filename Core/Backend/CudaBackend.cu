@@ -77,6 +77,11 @@ std::string description() {
          std::to_string(p.multiProcessorCount) + " SMs, " + std::to_string(p.totalGlobalMem >> 20) + " MiB)";
 }
 
+std::size_t memoryBytes() {
+  std::size_t free = 0, total = 0;
+  return cudaMemGetInfo(&free, &total) == cudaSuccess ? total : 0;
+}
+
 void synchronize() { check(cudaDeviceSynchronize(), "synchronize"); }
 
 void* allocate(std::size_t bytes) {

@@ -11,6 +11,8 @@ namespace soak::cuda {
 bool built();
 bool available(std::string* why);
 std::string description();
+// Total memory of the GPU in bytes (0 if unknown).
+std::size_t memoryBytes();
 void synchronize();
 void* allocate(std::size_t bytes);
 void release(void* p) noexcept;

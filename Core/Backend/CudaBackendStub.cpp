@@ -14,6 +14,7 @@ bool available(std::string* why) {
   return false;
 }
 std::string description() { return {}; }
+std::size_t memoryBytes() { return 0; }
 void synchronize() {}
 void* allocate(std::size_t) { refuse(); }
 void release(void*) noexcept {}

@@ -1,5 +1,7 @@
 #include "Backend/Device.h"
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -49,6 +51,12 @@ Device resolveDevice(const std::string& request) {
 
 void synchronize(Device d) {
   if (d == Device::Cuda) cuda::synchronize();
+}
+
+std::size_t deviceMemoryBytes(Device d) {
+  if (d == Device::Cuda) return cuda::memoryBytes();
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+  return pages > 0 && pageSize > 0 ? std::size_t(pages) * std::size_t(pageSize) : 0;
 }
 
 void* deviceAllocate(Device d, std::size_t bytes) {

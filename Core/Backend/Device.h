@@ -31,6 +31,9 @@ void copyDeviceToHost(Device d, void* dst, const void* src, std::size_t bytes);
 void copyDeviceToDevice(Device d, void* dst, const void* src, std::size_t bytes);
 void fillBytes(Device d, void* dst, int value, std::size_t bytes);
 
+// Total memory of the device in bytes: the GPU's, or the machine's RAM for
+// the CPU (0 if unknown).
+std::size_t deviceMemoryBytes(Device d);
 // Bytes of device memory currently allocated through deviceAllocate (per device).
 std::size_t deviceBytesInUse(Device d);
 

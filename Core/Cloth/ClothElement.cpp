@@ -32,6 +32,7 @@ class ClothModule : public Module {
     const std::string meshFile = p_.text("mesh");
     const int cellsU = int(p_.integer("cellsU")), cellsV = int(p_.integer("cellsV"));
     if (meshFile.empty()) {
+      sim.checkParticleBudget((long long)(cellsU + 1) * (long long)(cellsV + 1), "<Cloth>", where);
       Vec3 u = p_.vector("axisU"), v = p_.vector("axisV");
       if (length(u) < 1e-9f || length(v) < 1e-9f || length(cross(u, v)) < 1e-6f * length(u) * length(v))
         throw InputError("<Cloth>: axisU and axisV must be non-zero and not parallel", where);
@@ -39,6 +40,7 @@ class ClothModule : public Module {
                                        p_.realf("height"), cellsU, cellsV);
     } else {
       spec.mesh = loadObjMesh(p_.resolvePath(meshFile));
+      spec.mesh.triangleLines.clear();  // checked against the file already; later messages name the scene
       const float scale = p_.realf("scale");
       const Vec3 t = p_.vector("translate");
       for (Vec3& x : spec.mesh.vertices) x = x * scale + t;

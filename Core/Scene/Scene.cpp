@@ -121,6 +121,10 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
   LineIndex lines(text);
   auto where = [&](int line) { return path + ":" + std::to_string(line); };
 
+  const std::size_t nul = text.find('\0');
+  if (nul != std::string::npos)
+    throw InputError("not a text file: byte " + std::to_string(nul) + " is NUL; a scene is XML text",
+                     where(lines.lineOf(int(nul))));
   pugi::xml_document doc;
   pugi::xml_parse_result res = doc.load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_comments);
   if (res.status == pugi::status_no_document_element)
@@ -164,7 +168,10 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
     if (n.type() != pugi::node_element) {
       std::string t = n.value();
       if (t.find_first_not_of(" \t\r\n") == std::string::npos) continue;
-      throw InputError("unexpected text inside <Scene>: '" + t.substr(0, 40) + "'", where(line));
+      const std::size_t first = t.find_first_not_of(" \t\r\n");
+      std::string shown = t.substr(first, 40);
+      shown = shown.substr(0, shown.find_first_of("\r\n"));
+      throw InputError("unexpected text inside <Scene>: '" + shown + "' (elements only)", where(lines.lineOf(int(n.offset_debug() + first))));
     }
     const std::string name = n.name();
     const ElementDecl* decl = registry.find(name);

@@ -13,14 +13,31 @@
 namespace soak {
 
 namespace {
+bool startsWith(const std::string& line, char c) {
+  return line.size() >= 2 && line[0] == c && (line[1] == ' ' || line[1] == '\t');
+}
+
 // tinyobjloader reads "nan" or "inf" as 0 without a word; check vertex lines
-// ourselves so such a file is refused with its line number.
-void checkVertexLines(const std::string& path) {
+// ourselves so such a file is refused with its line number. Returns the line
+// of every face, in order, for messages about faces.
+std::vector<int> checkVertexLines(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot open OBJ mesh", path);
   std::string line;
+  std::vector<int> faceLines;
   for (int lineNo = 1; std::getline(in, line); ++lineNo) {
-    if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
+    if (startsWith(line, 'f')) {
+      // tinyobjloader drops a face of one or two vertices without a word.
+      std::istringstream tokens(line.substr(2, line.find('#') == std::string::npos ? std::string::npos
+                                                                                    : line.find('#') - 2));
+      int corners = 0;
+      for (std::string tok; tokens >> tok;) ++corners;
+      if (corners < 3)
+        throw InputError("face has " + std::to_string(corners) + " vertices; a face needs at least 3",
+                         path + ":" + std::to_string(lineNo));
+      faceLines.push_back(lineNo);
+    }
+    if (!startsWith(line, 'v')) continue;
     std::istringstream tokens(line.substr(2));
     std::string tok;
     for (int c = 0; c < 3 && tokens >> tok; ++c) {
@@ -30,13 +47,14 @@ void checkVertexLines(const std::string& path) {
         throw InputError("vertex coordinate '" + tok + "' is not a finite number", path + ":" + std::to_string(lineNo));
     }
   }
+  return faceLines;
 }
 }  // namespace
 
 TriangleMesh loadObjMesh(const std::string& path) {
-  checkVertexLines(path);
+  const std::vector<int> faceLines = checkVertexLines(path);
   tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
+  config.triangulate = false;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config)) {
@@ -50,16 +68,22 @@ TriangleMesh loadObjMesh(const std::string& path) {
   mesh.vertices.resize(nv);
   for (std::size_t i = 0; i < nv; ++i)
     mesh.vertices[i] = Vec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
+  // Faces in file order (shapes are too), so face k is on faceLines[k]
+  // when tinyobjloader kept every face line.
+  std::size_t face = 0;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     std::size_t offset = 0;
-    for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+    for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
       const int k = shape.mesh.num_face_vertices[f];
-      if (k != 3) throw InputError("face " + std::to_string(f + 1) + " of '" + shape.name + "' has " +
-                                       std::to_string(k) + " vertices after triangulation", path);
-      std::array<int, 3> t{};
-      for (int c = 0; c < 3; ++c) t[c] = shape.mesh.indices[offset + c].vertex_index;
-      mesh.triangles.push_back(t);
-      offset += 3;
+      const int line = face < faceLines.size() ? faceLines[face] : 0;
+      const std::string where = line > 0 ? path + ":" + std::to_string(line) : path;
+      if (k < 3) throw InputError("face has " + std::to_string(k) + " vertices; a face needs at least 3", where);
+      for (int c = 1; c + 1 < k; ++c) {  // a fan: (0, c, c+1)
+        mesh.triangles.push_back({shape.mesh.indices[offset].vertex_index, shape.mesh.indices[offset + c].vertex_index,
+                                  shape.mesh.indices[offset + c + 1].vertex_index});
+        mesh.triangleLines.push_back(line);
+      }
+      offset += std::size_t(k);
     }
   }
   validateClothMesh(mesh, path);
@@ -75,17 +99,19 @@ void validateClothMesh(const TriangleMesh& mesh, const std::string& name) {
   std::map<std::pair<int, int>, int> edgeUse;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
+    const bool hasLine = f < mesh.triangleLines.size() && mesh.triangleLines[f] > 0;
+    const std::string where = hasLine ? name + ":" + std::to_string(mesh.triangleLines[f]) : name;
     for (int c = 0; c < 3; ++c)
       if (t[c] < 0 || t[c] >= nv)
         throw InputError("triangle " + std::to_string(f + 1) + " uses vertex index " + std::to_string(t[c] + 1) +
-                             ", out of range 1.." + std::to_string(nv), name);
+                             ", out of range 1.." + std::to_string(nv), where);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
-      throw InputError("triangle " + std::to_string(f + 1) + " is degenerate (a vertex repeats)", name);
+      throw InputError("triangle " + std::to_string(f + 1) + " is degenerate (a vertex repeats)", where);
     const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
     const float area2 = length(cross(b - a, c - a));
     const float scale = std::max({lengthSquared(b - a), lengthSquared(c - a), lengthSquared(c - b)});
     if (!(area2 > 1e-7f * scale))
-      throw InputError("triangle " + std::to_string(f + 1) + " is degenerate (zero area)", name);
+      throw InputError("triangle " + std::to_string(f + 1) + " is degenerate (zero area)", where);
     for (int c2 = 0; c2 < 3; ++c2) {
       int u = t[c2], v = t[(c2 + 1) % 3];
       if (++edgeUse[{std::min(u, v), std::max(u, v)}] > 2)
@@ -93,7 +119,7 @@ void validateClothMesh(const TriangleMesh& mesh, const std::string& name) {
                              std::to_string(std::max(u, v) + 1) +
                              " is shared by more than two triangles (non-manifold; cloth meshes allow at most two, "
                              "paper Section 3.2)",
-                         name);
+                         where);
     }
   }
 }

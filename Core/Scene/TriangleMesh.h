@@ -10,12 +10,15 @@ namespace soak {
 struct TriangleMesh {
   std::vector<Vec3> vertices;
   std::vector<std::array<int, 3>> triangles;
+  // Line of the source file each triangle comes from (empty if none), so
+  // that errors name file:line.
+  std::vector<int> triangleLines;
 };
 
-// Loads an OBJ file through tinyobjloader (polygons are triangulated).
+// Loads an OBJ file through tinyobjloader (polygons are split into fans).
 // Throws InputError naming the file for: a file that cannot be read or
 // parsed, a NaN or infinite coordinate, a face index out of range, no
-// triangles, a degenerate triangle (repeated vertex or zero area), or an
+// triangles, a face of fewer than 3 vertices, a degenerate triangle (repeated vertex or zero area), or an
 // edge shared by more than two triangles (the paper's one restriction on
 // cloth meshes, Section 3.2).
 TriangleMesh loadObjMesh(const std::string& path);

@@ -64,8 +64,7 @@ class WaterBlockModule : public Module {
     const long long ny = std::llround(std::floor((hi.y - lo.y) / s + 1e-4)) + 0;
     const long long nz = std::llround(std::floor((hi.z - lo.z) / s + 1e-4)) + 0;
     const long long total = std::max(nx, 1LL) * std::max(ny, 1LL) * std::max(nz, 1LL);
-    if (total > 200000000LL)
-      throw InputError("<WaterBlock> would create " + std::to_string(total) + " particles (limit 2e8)", p_.where());
+    sim.checkParticleBudget(total, "<WaterBlock>", p_.where());
     std::vector<ParticleInit> batch;
     batch.reserve(static_cast<std::size_t>(total));
     for (long long k = 0; k < std::max(nz, 1LL); ++k)

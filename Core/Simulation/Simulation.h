@@ -79,6 +79,14 @@ class Simulation {
   void raiseSupportRadius(float r) {
     if (r > maxSupportRadius_) maxSupportRadius_ = r;
   }
+  // Refuses (InputError at `where`) to add `added` particles when the run
+  // would need more memory than the device has, at about
+  // kEstimatedBytesPerParticle each (Doc/performance.md measures 316-913).
+  void checkParticleBudget(long long added, const std::string& what, const std::string& where) const;
+  static constexpr long long kEstimatedBytesPerParticle = 512;
+  // Indices are 32-bit: no run holds more particles than this.
+  static constexpr long long kMaxParticles = 200000000LL;
+
   // Marks the collider list changed so it is uploaded before the next step.
   void collidersChanged() { collidersDirty_ = true; }
   const Collider* deviceColliders() const { return colliderBuffer_.data(); }
