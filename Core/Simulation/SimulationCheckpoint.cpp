@@ -16,8 +16,9 @@ void Simulation::saveState(StateWriter& out) const {
   particles.saveState(out);
   out.put<std::int32_t>(static_cast<std::int32_t>(modules_.size()));
   for (const auto& m : modules_) {
-    out.putString(typeid(*m).name());
-    m->saveState(out);
+    const Module& module = *m;
+    out.putString(typeid(module).name());
+    module.saveState(out);
   }
 }
 
@@ -37,9 +38,10 @@ void Simulation::loadState(StateReader& in) {
     in.fail("it was written for " + std::to_string(moduleCount) + " scene elements, the scene has " +
             std::to_string(modules_.size()));
   for (auto& m : modules_) {
+    Module& module = *m;
     const std::string kind = in.getString();
-    if (kind != typeid(*m).name()) in.fail("scene element of kind '" + kind + "' where the scene has another");
-    m->loadState(in);
+    if (kind != typeid(module).name()) in.fail("scene element of kind '" + kind + "' where the scene has another");
+    module.loadState(in);
   }
   stepIndex_ = step;
   time_ = double(stepIndex_) * settings.timeStep;

@@ -40,6 +40,8 @@ class WetClothModule : public Module {
     for (Buffer<float>* b : {&dryMass_, &kappa_, &scratchA_, &scratchB_, &scratchC_}) *b = Buffer<float>(sim.device());
     delta_ = Buffer<Vec3>(sim.device());
     spawn_ = Buffer<int>(sim.device());
+    dripOffset_ = Buffer<int>(sim.device());
+    dripSources_ = Buffer<DripSource>(sim.device());
     dryMass_.upload(dry);
     kappa_.upload(std::vector<float>(std::size_t(vertices), 1.f));
     sim.couplingStiffness = kappa_.data();
@@ -132,8 +134,9 @@ class WetClothModule : public Module {
     WetArrays a = arrays(s);
     ParticleView p = s.particles.view();
     transferBuffers(s.device(), p, s.grid.view(), a, w_, ref_);
-    const int drips = takeDripMass(s.device(), p, a, w_, spawn_.data());
-    if (drips > 0) queueDrips(s);
+    dripOffset_.resize(std::size_t(p.count));
+    const int drips = takeDripMass(s.device(), p, a, w_, spawn_.data(), dripOffset_.data());
+    if (drips > 0) queueDrips(s, drips);
     attractDrips(s.device(), p, s.grid.view(), a, w_, ref_, float(s.settings.timeStep));
   }
   void stick(Simulation& s) {
@@ -146,18 +149,16 @@ class WetClothModule : public Module {
   // starts below its cloth particle, a drip spacing plus half the cloth
   // thickness away, so that it does not overlap the water already there
   // (the role of Lin's placement in the paper), with the particle's velocity.
-  void queueDrips(Simulation& s) {
-    const std::vector<int> spawn = spawn_.download();
-    const std::vector<Float4> x = s.particles.downloadPredicted();
-    const std::vector<Vec3> v = s.particles.downloadVelocities();
-    const std::vector<int> id = s.particles.downloadIds();
+  void queueDrips(Simulation& s, int drips) {
+    dripSources_.resize(std::size_t(drips));
+    gatherDripSources(s.device(), s.particles.view(), spawn_.data(), dripOffset_.data(), dripSources_.data());
+    const std::vector<DripSource> sources = dripSources_.download();
     const float scale = std::cbrt(w_.mThreshold / ref_.mass);
     const float offset = 0.5f * s.cloth.maxThickness() + 0.5f * s.water.spacing * scale;
-    for (std::size_t i = 0; i < spawn.size(); ++i) {
-      if (!spawn[i]) continue;
+    for (const DripSource& source : sources) {
       ParticleInit q;
-      q.position = x[i].xyz() + ref_.gravityDir * offset;
-      q.velocity = v[i];
+      q.position = source.position + ref_.gravityDir * offset;
+      q.velocity = source.velocity;
       q.mass = w_.mThreshold;
       q.radius = ref_.supportRadius * scale;
       q.phase = kPhaseWater;
@@ -194,7 +195,8 @@ class WetClothModule : public Module {
   int held_ = -1, buffer_ = -1, saturation_ = -1, volume_ = -1;
   Buffer<float> dryMass_, kappa_, scratchA_, scratchB_, scratchC_;
   Buffer<Vec3> delta_;
-  Buffer<int> spawn_;
+  Buffer<int> spawn_, dripOffset_;
+  Buffer<DripSource> dripSources_;
   std::vector<ParticleInit> pendingDrips_;
   double pendingDripMass_ = 0.0;
   long long dripsSpawned_ = 0;

@@ -301,18 +301,22 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   }, "wet.emit.apply");
 }
 
-int takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int* spawn) {
+int takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int* spawn, int* offsets) {
   const float mThr = w.mThreshold;
-  float* count = a.scratchA;
   forEach(d, p.count, SOAK_LAMBDA(int i) {
     spawn[i] = 0;
-    count[i] = 0.f;
     if (!isCloth(p.phase[i]) || !(a.buffer[i] >= mThr)) return;
     a.buffer[i] -= mThr;
     spawn[i] = 1;
-    count[i] = 1.f;
   }, "wet.emit.drips");
-  return int(reduceSum(d, count, p.count) + 0.5);
+  return exclusiveScan(d, spawn, offsets, p.count);
+}
+
+void gatherDripSources(Device d, ParticleView p, const int* spawn, const int* offsets, DripSource* out) {
+  forEach(d, p.count, SOAK_LAMBDA(int i) {
+    if (!spawn[i]) return;
+    out[offsets[i]] = {p.predicted[i].xyz(), p.velocity[i]};
+  }, "wet.emit.gather");
 }
 
 void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,

@@ -51,9 +51,19 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
 void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref);
 
 // Takes m_threshold from every buffer that holds at least that much; `spawn`
-// gets 1 where a drip is due (the caller creates the particles). Returns
-// the number of drips.
-int takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int* spawn);
+// gets 1 where a drip is due (the caller creates the particles) and
+// `offsets` its exclusive scan (the drip's index). Returns the number of
+// drips.
+int takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int* spawn, int* offsets);
+
+// Where a drip starts: its cloth particle's predicted position and velocity.
+struct DripSource {
+  Vec3 position;
+  Vec3 velocity;
+};
+// Packs the sources of the drips flagged by takeDripMass, in slot order, so
+// that only they cross to the host (not whole particle arrays).
+void gatherDripSources(Device d, ParticleView p, const int* spawn, const int* offsets, DripSource* out);
 
 // wet.emit, second half (Eq. 19): cloth attracts water particles lighter
 // than m0 (drips and partly absorbed particles), as a position change

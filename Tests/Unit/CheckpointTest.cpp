@@ -109,13 +109,13 @@ TEST(Checkpoint, ResumeAfterAKillWritesFramesBitIdenticalToAnUninterruptedRun) {
   const std::string whole = freshTempPath("ckpt_whole"), killed = freshTempPath("ckpt_killed");
   const int frames = 40;
   SoakResult a = runSoak("run " + scene + " -o " + whole + " --frames " + std::to_string(frames) +
-                         " --device cpu --threads 2 --quiet");
+                         " --device cpu --quiet");
   ASSERT_EQ(a.code, 0) << a.output;
 
   // Killed (SIGKILL) once frame 14 is on disk: the last checkpoint is frame
   // 12 or later, and frames past it may be on disk too.
   const pid_t pid = startSoak({"run", scene, "-o", killed, "--frames", std::to_string(frames), "--device", "cpu",
-                               "--threads", "2", "--quiet", "--checkpoint-every", "4"});
+                               "--quiet", "--checkpoint-every", "4"});
   ASSERT_TRUE(waitForFile(pid, frameFile(killed, "water", 14))) << "the run ended before it could be killed";
   kill(pid, SIGKILL);
   int status = 0;
@@ -130,7 +130,7 @@ TEST(Checkpoint, ResumeAfterAKillWritesFramesBitIdenticalToAnUninterruptedRun) {
     EXPECT_NE(text.find("</VTKFile>"), std::string::npos) << f << " is listed but not whole";
   }
 
-  SoakResult r = runSoak("run --resume " + killed + " --device cpu --threads 2");
+  SoakResult r = runSoak("run --resume " + killed + " --device cpu");
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("resuming"), std::string::npos) << r.output;
   expectSameFrames(whole, killed, frames);
@@ -193,8 +193,8 @@ TEST(Checkpoint, CorruptedTruncatedOrMismatchedCheckpointsAreRefused) {
 TEST(Checkpoint, SigintFinishesTheFrameWritesACheckpointAndStopsCleanly) {
   const std::string scene = sceneFile();
   const std::string dir = freshTempPath("ckpt_sigint"), whole = freshTempPath("ckpt_whole3");
-  ASSERT_EQ(runSoak("run " + scene + " -o " + whole + " --frames 30 --device cpu --threads 2 --quiet").code, 0);
-  const pid_t pid = startSoak({"run", scene, "-o", dir, "--frames", "30", "--device", "cpu", "--threads", "2",
+  ASSERT_EQ(runSoak("run " + scene + " -o " + whole + " --frames 30 --device cpu --quiet").code, 0);
+  const pid_t pid = startSoak({"run", scene, "-o", dir, "--frames", "30", "--device", "cpu",
                                "--quiet", "--checkpoint-every", "100"});
   ASSERT_TRUE(waitForFile(pid, frameFile(dir, "water", 6))) << "the run ended before it could be interrupted";
   kill(pid, SIGINT);
@@ -207,7 +207,7 @@ TEST(Checkpoint, SigintFinishesTheFrameWritesACheckpointAndStopsCleanly) {
   const std::vector<std::string> listed = pvdFiles(dir + "/water.pvd");
   ASSERT_GE(listed.size(), 6u);
   ASSERT_LT(listed.size(), 31u);
-  SoakResult r = runSoak("run --resume " + dir + " --device cpu --threads 2 --quiet");
+  SoakResult r = runSoak("run --resume " + dir + " --device cpu --quiet");
   ASSERT_EQ(r.code, 0) << r.output;
   expectSameFrames(whole, dir, 30);
 }

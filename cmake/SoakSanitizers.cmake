@@ -1,0 +1,22 @@
+# AddressSanitizer + UndefinedBehaviorSanitizer (preset "sanitize") and the
+# libFuzzer targets (they need clang: the same preset builds them).
+option(SOAK_SANITIZE "Build everything with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+option(SOAK_FUZZ "Build the libFuzzer targets for the scene and OBJ loaders (clang only)" OFF)
+
+if(SOAK_SANITIZE)
+  if(SOAK_WITH_CUDA)
+    message(FATAL_ERROR "SOAK_SANITIZE: configure with SOAK_CUDA=OFF (the sanitizers cover the CPU backend)")
+  endif()
+  add_compile_options($<$<COMPILE_LANGUAGE:C,CXX>:-fsanitize=address,undefined>
+                      $<$<COMPILE_LANGUAGE:C,CXX>:-fno-sanitize-recover=undefined>
+                      $<$<COMPILE_LANGUAGE:C,CXX>:-fno-omit-frame-pointer>)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+if(SOAK_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "SOAK_FUZZ needs clang (libFuzzer): configure with CMAKE_CXX_COMPILER=clang++")
+  endif()
+  # Coverage for the fuzzers' guidance in every library they call.
+  add_compile_options($<$<COMPILE_LANGUAGE:C,CXX>:-fsanitize=fuzzer-no-link>)
+endif()
