@@ -24,7 +24,7 @@ namespace soak {
 
 FluidSolver::FluidSolver(Device device)
     : device_(device), lambda_(device), density_(device), volume_(device), scratch_(device), delta_(device),
-      omega_(device) {}
+      omega_(device), neighbours_(device) {}
 
 void FluidSolver::configure(const WaterSettings& water) {
   const float h = water.supportRadius, s = water.spacing;
@@ -75,8 +75,8 @@ struct CorrectionConstants {
 
 // dx of every water particle and of the cloth particles it touches, from the
 // multipliers `lam` (see the units comment above), then x* += dx.
-void applyDensityCorrections(Device d, ParticleView p, GridView g, const float* lam, const float* volume, Vec3* delta,
-                             CorrectionConstants k) {
+void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, const float* lam, const float* volume,
+                             Vec3* delta, CorrectionConstants k) {
   const float rho0 = k.rho0, m0 = k.m0, corrK = k.corrK, corrQ = k.corrQ, moveScale = k.moveScale;
   const Collider* colliders = k.colliders;
   const int colliderCount = k.colliderCount;
@@ -89,10 +89,9 @@ void applyDensityCorrections(Device d, ParticleView p, GridView g, const float* 
     if (isWater(phi)) {
       const Vec3 xi = xi4.xyz();
       const float hi = p.radius[i], mui = p.mass[i] / m0, li = lam[i];
-      forEachCandidate(g, g.cellKey[i], [&](int j) {
+      forEachListedNeighbour(g, i, [&](int j) {
         if (j == i) return;
         const int phj = p.phase[j];
-        if (!isWater(phj) && !isCloth(phj)) return;
         const Vec3 xij = xi - p.predicted[j].xyz();
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, p.radius[j]);
@@ -119,8 +118,7 @@ void applyDensityCorrections(Device d, ParticleView p, GridView g, const float* 
       const Vec3 xi = xi4.xyz();
       const float hi = p.radius[i];
       const float psi = rho0 * volume[i] / m0, mui = p.mass[i] / m0;
-      forEachCandidate(g, g.cellKey[i], [&](int j) {
-        if (!isWater(p.phase[j])) return;
+      forEachListedNeighbour(g, i, [&](int j) {
         const Vec3 xij = xi - p.predicted[j].xyz();
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, p.radius[j]);
@@ -140,7 +138,9 @@ void FluidSolver::solve(Simulation& sim) {
   ParticleView p = sim.particles.view();
   if (p.count == 0) return;
   resize(p.count);
-  GridView g = sim.grid.view();
+  // Pairs within (1 + skin) h, once per step (FluidNeighbours.h).
+  neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin);
+  const FluidNeighbourView g = neighbours_.view();
   const WaterSettings ws = sim.water;
   const float rho0 = ws.restDensity, m0 = ws.particleMass;
   const float eps = ws.relaxation * restDenominator_;
@@ -167,9 +167,8 @@ void FluidSolver::solve(Simulation& sim) {
       const float hi = p.radius[i], mui = p.mass[i] / m0;
       float dens = 0.f, sumG2 = 0.f;
       Vec3 gradSelf(0.f, 0.f, 0.f);
-      forEachCandidate(g, g.cellKey[i], [&](int j) {
+      forEachListedNeighbour(g, i, [&](int j) {
         const int phj = p.phase[j];
-        if (!isWater(phj) && !isCloth(phj)) return;
         const Float4 xj = p.predicted[j];
         const Vec3 xij = xi - xj.xyz();
         const float r2 = lengthSquared(xij);

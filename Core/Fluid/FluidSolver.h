@@ -4,6 +4,7 @@
 // particles of different masses and radii (partial absorption, drips) stay
 // symmetric and momentum conserving. See Doc/model.md, "Water".
 #include "Backend/Buffer.h"
+#include "Fluid/FluidNeighbours.h"
 #include "Fluid/WallDensity.h"
 #include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"
@@ -44,6 +45,7 @@ class FluidSolver {
   WallDensityTable wall_;
   Buffer<float> lambda_, density_, volume_, scratch_;
   Buffer<Vec3> delta_, omega_;
+  FluidNeighbours neighbours_;
 };
 
 }  // namespace soak

@@ -46,6 +46,7 @@ class WaterModule : public Module {
     sim.water.artificialPressureRadius = p_.realf("artificialPressureRadius");
     sim.water.viscosity = p_.realf("viscosity");
     sim.water.vorticity = p_.realf("vorticity");
+    sim.water.neighbourSkin = p_.realf("neighbourSkin");
   }
 
  private:
@@ -226,6 +227,10 @@ void registerCoreElements(ModuleRegistry& r) {
             .real("artificialPressureRadius", "", "0.2", "delta q of s_corr, relative to h.", 0.0, 1.0, true)
             .real("viscosity", "", "0.01", "XSPH viscosity c.", 0.0, 1.0)
             .real("vorticity", "m/s", "0", "Vorticity confinement epsilon (0: off).", 0.0, 1e3)
+            .real("neighbourSkin", "", "0.1",
+                  "The density iterations visit the pairs within (1 + skin) h found at the start of the step "
+                  "(a large value, e.g. 100, visits every grid candidate, as a query per iteration would).",
+                  0.0, 1e3)
             .makeUnique()
             .create([](const ElementParams& p) { return std::make_unique<WaterModule>(p); }));
   r.add(ElementDecl("WaterBlock", "A box filled with water particles on a lattice of the water spacing.", "Water")

@@ -30,6 +30,7 @@ struct WaterSettings {
   float artificialPressureRadius = 0.2f;  // delta q / h
   float viscosity = 0.01f;      // XSPH c
   float vorticity = 0.0f;       // vorticity confinement epsilon, m/s
+  float neighbourSkin = 0.1f;   // fluid neighbour lists keep pairs within (1 + skin) h (FluidNeighbours.h)
 };
 
 }  // namespace soak

@@ -1,0 +1,49 @@
+#include "Fluid/FluidNeighbours.h"
+
+#include "Backend/ForEach.h"
+#include "Backend/Primitives.h"
+#include "Fluid/SphKernels.h"
+
+namespace soak {
+
+namespace {
+// Calls f(j) for the pairs the fluid passes can use (see FluidNeighbours.h).
+template <class F>
+SOAK_INLINE void forEachFluidCandidate(const ParticleView& p, const GridView& g, int i, float reach, F&& f) {
+  const int phi = p.phase[i];
+  const Float4 xi4 = p.predicted[i];
+  const bool water = isWater(phi);
+  if (!water && !(isCloth(phi) && xi4.w > 0.f)) return;
+  const Vec3 xi = xi4.xyz();
+  const float hi = p.radius[i];
+  forEachCandidate(g, g.cellKey[i], [&](int j) {
+    const int phj = p.phase[j];
+    if (water ? (!isWater(phj) && !isCloth(phj)) : !isWater(phj)) return;
+    const float h = pairSupport(hi, p.radius[j]) * reach;
+    if (lengthSquared(xi - p.predicted[j].xyz()) < h * h) f(j);
+  });
+}
+}  // namespace
+
+void FluidNeighbours::build(ParticleView p, GridView g, float skin) {
+  const float reach = 1.f + skin;
+  const int n = p.count;
+  start_.resize(std::size_t(n));
+  count_.resize(std::size_t(n));
+  int* count = count_.data();
+  forEach(device_, n, SOAK_LAMBDA(int i) {
+    int c = 0;
+    forEachFluidCandidate(p, g, i, reach, [&](int) { ++c; });
+    count[i] = c;
+  }, "fluid.neighbours.count");
+  const int total = exclusiveScan(device_, count, start_.data(), n);
+  index_.resize(std::size_t(total > 0 ? total : 1));
+  const int* start = start_.data();
+  int* index = index_.data();
+  forEach(device_, n, SOAK_LAMBDA(int i) {
+    int k = start[i];
+    forEachFluidCandidate(p, g, i, reach, [&](int j) { index[k++] = j; });
+  }, "fluid.neighbours.fill");
+}
+
+}  // namespace soak
