@@ -37,7 +37,14 @@ void FluidNeighbours::build(ParticleView p, GridView g, float skin) {
     count[i] = c;
   }, "fluid.neighbours.count");
   const int total = exclusiveScan(device_, count, start_.data(), n);
-  index_.resize(std::size_t(total > 0 ? total : 1));
+  // Room for 1/8 more than now, so that a growing list does not double the
+  // buffer (Buffer::resize grows geometrically); the old contents are not needed.
+  const std::size_t entries = std::size_t(total > 0 ? total : 1);
+  if (entries > index_.capacity()) {
+    index_ = Buffer<int>(device_);
+    index_.reserve(entries + entries / 8);
+  }
+  index_.resize(entries);
   const int* start = start_.data();
   int* index = index_.data();
   forEach(device_, n, SOAK_LAMBDA(int i) {

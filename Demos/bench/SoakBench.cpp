@@ -5,6 +5,7 @@
 //
 //   soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]
 //              [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]
+//              [--set Element.attr=value ...]   (applied to every case, e.g. to compare solver variants)
 //
 // Each case: the scene is built, advanced by its warm-up (simulated seconds
 // for Table 2 scenes, so the jet has emitted its water; steps for the scale
@@ -124,9 +125,9 @@ double nowMs() {
   return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
 }
 
-Result runCase(const Case& c, Device device, int steps) {
+Result runCase(const Case& c, Device device, int steps, const std::vector<std::string>& overrides) {
   const std::size_t before = deviceBytesInUse(device);
-  std::unique_ptr<LoadedScene> loaded = loadScene({c.scenePath, c.text, {}, {}}, device);
+  std::unique_ptr<LoadedScene> loaded = loadScene({c.scenePath, c.text, overrides, {}}, device);
   Simulation& sim = *loaded->sim;
   const double dt = sim.settings.timeStep;
   const int warm = c.warmupSteps + int(std::lround(c.warmupSeconds / dt));
@@ -243,7 +244,8 @@ std::vector<std::string> splitList(const std::string& s) {
 int usage() {
   std::fprintf(stderr,
                "usage: soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]\n"
-               "                  [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]\n");
+               "                  [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]\n"
+               "                  [--set Element.attr=value ...]\n");
   return 2;
 }
 
@@ -253,6 +255,7 @@ int main(int argc, char** argv) {
   std::string deviceName = "auto", scenes = "Scenes", json, only, scale;
   int steps = 50, warmupSteps = 20;
   bool table2 = true;
+  std::vector<std::string> overrides;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -268,6 +271,7 @@ int main(int argc, char** argv) {
       else if (a == "--warmup-steps") warmupSteps = std::stoi(next());
       else if (a == "--json") json = next();
       else if (a == "--no-table2") table2 = false;
+      else if (a == "--set") overrides.push_back(next());
       else if (a == "--help" || a == "-h") return usage(), 0;
       else return std::fprintf(stderr, "soak-bench: unknown argument '%s'\n", a.c_str()), usage();
     } catch (const std::exception& e) {
@@ -293,7 +297,7 @@ int main(int argc, char** argv) {
     std::vector<Result> results;
     for (const Case& c : cases) {
       std::fprintf(stderr, "soak-bench: %s ...\n", c.name.c_str());
-      results.push_back(runCase(c, device, steps));
+      results.push_back(runCase(c, device, steps, overrides));
       const Result& r = results.back();
       std::fprintf(stderr, "soak-bench: %s: %d water + %d cloth, %.3f ms per step (wetting %.3f ms)\n",
                    c.name.c_str(), r.water, r.cloth, r.totalMs, r.wettingMs);
