@@ -92,9 +92,7 @@ Checkpoint Checkpoint::read(const std::string& path) {
   c.payload_.assign(file.begin() + kPrefix, file.begin() + kPrefix + std::ptrdiff_t(size));
   StateReader reader(c.payload_.data(), c.payload_.size(), path);
   c.header_ = getHeader(reader);
-  StateWriter probe;  // the header's length: where the rest starts
-  putHeader(probe, c.header_);
-  c.stateOffset_ = probe.bytes().size();
+  c.stateOffset_ = reader.offset();
   return c;
 }
 

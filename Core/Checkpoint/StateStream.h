@@ -71,6 +71,7 @@ class StateReader {
     if (got != expected) fail("expected section '" + expected + "', found '" + got + "'");
   }
   bool atEnd() const { return pos_ == size_; }
+  std::size_t offset() const { return pos_; }  // bytes read so far
   [[noreturn]] void fail(const std::string& why) const {
     throw InputError("checkpoint is not readable: " + why, what_);
   }

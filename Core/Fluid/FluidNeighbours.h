@@ -38,7 +38,6 @@ class FluidNeighbours {
   // keeping pairs within (1 + skin) h_ij (Water.neighbourSkin).
   void build(ParticleView p, GridView g, float skin);
   FluidNeighbourView view() const { return {start_.data(), count_.data(), index_.data()}; }
-  std::size_t bytes() const { return (start_.capacity() + count_.capacity() + index_.capacity()) * sizeof(int); }
 
  private:
   Buffer<int> start_, count_, index_;

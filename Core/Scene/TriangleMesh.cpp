@@ -17,19 +17,18 @@ bool startsWith(const std::string& line, char c) {
   return line.size() >= 2 && line[0] == c && (line[1] == ' ' || line[1] == '\t');
 }
 
-// tinyobjloader reads "nan" or "inf" as 0 without a word; check vertex lines
-// ourselves so such a file is refused with its line number. Returns the line
-// of every face, in order, for messages about faces.
-std::vector<int> checkVertexLines(const std::string& path) {
+// What tinyobjloader lets pass without a word, checked here so that the
+// file is refused with its line number: "nan" or "inf" coordinates (read as
+// 0) and faces of one or two vertices (dropped). Returns the line of every
+// face, in order, for messages about faces.
+std::vector<int> scanObjLines(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot open OBJ mesh", path);
   std::string line;
   std::vector<int> faceLines;
   for (int lineNo = 1; std::getline(in, line); ++lineNo) {
     if (startsWith(line, 'f')) {
-      // tinyobjloader drops a face of one or two vertices without a word.
-      std::istringstream tokens(line.substr(2, line.find('#') == std::string::npos ? std::string::npos
-                                                                                    : line.find('#') - 2));
+      std::istringstream tokens(line.substr(0, line.find('#')).substr(2));  // the corners, up to a comment
       int corners = 0;
       for (std::string tok; tokens >> tok;) ++corners;
       if (corners < 3)
@@ -52,7 +51,7 @@ std::vector<int> checkVertexLines(const std::string& path) {
 }  // namespace
 
 TriangleMesh loadObjMesh(const std::string& path) {
-  const std::vector<int> faceLines = checkVertexLines(path);
+  const std::vector<int> faceLines = scanObjLines(path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;
   config.vertex_color = false;

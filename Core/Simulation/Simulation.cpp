@@ -1,7 +1,5 @@
 #include "Simulation/Simulation.h"
 
-#include "Simulation/Instability.h"
-
 #include <algorithm>
 
 #include "Backend/Primitives.h"
@@ -10,6 +8,7 @@
 #include "Cloth/ClothSolve.h"
 #include "Coupling/TriangleCoupling.h"
 #include "Physics/Integrate.h"
+#include "Simulation/Instability.h"
 
 namespace soak {
 

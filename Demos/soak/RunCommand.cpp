@@ -60,9 +60,7 @@ void printProfile(const Simulation& sim) {
   std::printf("  %-22s %10.4f\n", "wetting (wet.*)", wetting);
   std::printf("  %-22s %10.4f\n", "total", total);
 }
-}  // namespace
 
-namespace {
 std::string readWholeFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read the run's scene file", path);
