@@ -1,18 +1,20 @@
 #include "Cloth/ClothContact.h"
 
 #include "Backend/ForEach.h"
+#include "Cloth/ForEachClothParticle.h"
 #include "Coupling/TriangleCoupling.h"
 #include "Physics/Integrate.h"
 
 namespace soak {
 
 void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta, int passes) {
+  const ClothSlots cloth = clothSlots(c);
   for (int pass = 0; pass < passes; ++pass) {
-    forEach(d, p.count, SOAK_LAMBDA(int i) {
+    forEachClothParticle(d, cloth, SOAK_LAMBDA(int i) {
       delta[i] = Vec3(0.f, 0.f, 0.f);
       const int phi = p.phase[i];
       const Float4 xi4 = p.predicted[i];
-      if (!isCloth(phi) || xi4.w == 0.f) return;
+      if (xi4.w == 0.f) return;
       const Vec3 xi = xi4.xyz();
       const int vi = p.id[i];
       const Vec3 resti = c.restPosition[vi];
@@ -41,7 +43,7 @@ void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec
       });
       if (count > 0) delta[i] = sum / float(count);
     }, "cloth.contact");
-    applyCorrections(d, p, delta, "cloth.contact.apply");
+    applyCorrectionsAt(d, p, cloth.slot, cloth.count, delta, "cloth.contact.apply");
   }
 }
 
@@ -58,10 +60,11 @@ SOAK_INLINE bool touchesOneRing(const ClothView& c, int v, const ClothTriangle& 
 
 void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta) {
   if (c.triangleCount == 0) return;
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
+  const ClothSlots cloth = clothSlots(c);
+  forEachClothParticle(d, cloth, SOAK_LAMBDA(int i) {
     delta[i] = Vec3(0.f, 0.f, 0.f);
     const Float4 xi4 = p.predicted[i];
-    if (!isCloth(p.phase[i]) || xi4.w == 0.f) return;
+    if (xi4.w == 0.f) return;
     const int vi = p.id[i];
     const Vec3 x0 = p.position[i].xyz();
     const float dist = 0.5f * c.thickness[vi];
@@ -82,7 +85,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
     });
     delta[i] = x - xi4.xyz();
   }, "cloth.vertexTriangle");
-  applyCorrections(d, p, delta, "cloth.vertexTriangle.apply");
+  applyCorrectionsAt(d, p, cloth.slot, cloth.count, delta, "cloth.vertexTriangle.apply");
 }
 
 }  // namespace soak

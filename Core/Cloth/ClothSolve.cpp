@@ -30,48 +30,52 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
   for (std::size_t col = 0; col + 1 < bendColours.size(); ++col)
     fits = fits && phases.add(bendBase + bendColours[col], bendBase + bendColours[col + 1]);
   if (!fits) throw std::logic_error("cloth solve: more constraint colours than kMaxPhases");
+  // The solve works on a copy of the predicted positions in vertex order:
+  // constraints name vertices, so each load is one indirection shorter than
+  // through the particle slots, and neighbouring vertices share cache lines.
+  Float4* x = c.vertexScratch;
+  forEach(d, vertices, SOAK_LAMBDA(int v) { x[v] = p.predicted[c.vertexSlot[v]]; }, "cloth.constraints.gather");
   forEachPhased(d, phases, SOAK_LAMBDA(int k) {
     if (k < edgeBase) {
       // Tethers: unilateral, only the free vertex moves (its pins do not).
       const int v = k;
-      const int i = c.vertexSlot[v];
-      Float4 x = p.predicted[i];
-      if (x.w == 0.f) return;
-      Vec3 q = x.xyz();
+      const Float4 xv = x[v];
+      if (xv.w == 0.f) return;
+      Vec3 q = xv.xyz();
       for (int t = 0; t < kTethers; ++t) {
         const int pin = c.tetherPin[v * kTethers + t];
         if (pin < 0) break;
-        const Vec3 anchor = p.predicted[c.vertexSlot[pin]].xyz();
+        const Vec3 anchor = x[pin].xyz();
         const Vec3 dd = q - anchor;
         const float len = length(dd), maxLen = c.tetherLength[v * kTethers + t];
         if (len > maxLen) q = anchor + dd * (maxLen / len);
       }
-      p.predicted[i] = Float4(q, x.w);
+      x[v] = Float4(q, xv.w);
     } else if (k < bendBase) {
       // Stretch (Eq. 8).
       const int e = k - edgeBase;
-      const int a = c.vertexSlot[c.edges[e].a], b = c.vertexSlot[c.edges[e].b];
-      const Float4 xa = p.predicted[a], xb = p.predicted[b];
+      const ClothEdge edge = c.edges[e];
+      const Float4 xa = x[edge.a], xb = x[edge.b];
       Vec3 da, db;
       projectStretch(xa.xyz(), xa.w, xb.xyz(), xb.w, c.edgeRest[e], c.edgeStiffness[e], dt, c.edgeLambda[e], da, db);
-      p.predicted[a] = Float4(xa.xyz() + da, xa.w);
-      p.predicted[b] = Float4(xb.xyz() + db, xb.w);
+      x[edge.a] = Float4(xa.xyz() + da, xa.w);
+      x[edge.b] = Float4(xb.xyz() + db, xb.w);
     } else {
       // Bending (Eq. 9).
       const int b = k - bendBase;
-      int slot[4];
-      Vec3 x[4], dx[4];
+      const ClothBend bend = c.bends[b];
+      Vec3 q[4], dx[4];
       float w[4];
       for (int a = 0; a < 4; ++a) {
-        slot[a] = c.vertexSlot[c.bends[b].v[a]];
-        const Float4 q = p.predicted[slot[a]];
-        x[a] = q.xyz();
-        w[a] = q.w;
+        const Float4 xa = x[bend.v[a]];
+        q[a] = xa.xyz();
+        w[a] = xa.w;
       }
-      projectBend(x, w, c.bendRest[b], c.bendStiffness[b], dt, c.bendLambda[b], dx);
-      for (int a = 0; a < 4; ++a) p.predicted[slot[a]] = Float4(x[a] + dx[a], w[a]);
+      projectBend(q, w, c.bendRest[b], c.bendStiffness[b], dt, c.bendLambda[b], dx);
+      for (int a = 0; a < 4; ++a) x[bend.v[a]] = Float4(q[a] + dx[a], w[a]);
     }
   }, "cloth.constraints");
+  forEach(d, vertices, SOAK_LAMBDA(int v) { p.predicted[c.vertexSlot[v]] = x[v]; }, "cloth.constraints.scatter");
 }
 
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,

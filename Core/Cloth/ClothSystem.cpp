@@ -12,7 +12,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -133,6 +133,7 @@ void ClothSystem::upload() {
   dTetherPin_.upload(tetherPin_);
   dTetherLength_.upload(tetherLength_);
   dSlot_.resize(nv);
+  dVertexScratch_.resize(nv);
   scratch_.resize(std::max<std::size_t>(edges_.size(), 1));
 }
 
@@ -157,6 +158,7 @@ ClothView ClothSystem::view() {
   v.tetherPin = dTetherPin_.data();
   v.tetherLength = dTetherLength_.data();
   v.vertexSlot = dSlot_.data();
+  v.vertexScratch = dVertexScratch_.data();
   v.vertexCount = vertexCount();
   v.edgeCount = int(dEdges_.size());
   v.bendCount = int(dBends_.size());

@@ -43,6 +43,7 @@ struct ClothView {
   const int* attachCollider = nullptr; // per vertex: collider index it moves with, or -1
   const float* thickness = nullptr;    // per vertex: cloth thickness (contact distance), m
   int* vertexSlot = nullptr;           // per vertex: current particle slot
+  Float4* vertexScratch = nullptr;     // per vertex: predicted position in vertex order, during the constraint solve
   // Long-range attachments ("tethers", Kim et al. 2012): vertex v stays
   // within tetherLength of pinned vertex tetherPin (kTethers per vertex, -1: none).
   const int* tetherPin = nullptr;
@@ -129,6 +130,7 @@ class ClothSystem {
   Buffer<float> dThickness_, dTetherLength_;
   Buffer<int> dTetherPin_;
   Buffer<Vec3> dRest_;
+  Buffer<Float4> dVertexScratch_;
   Buffer<float> scratch_;
 };
 

@@ -5,13 +5,9 @@
 
 namespace soak {
 
-void computeClothVolumes(Device d, ParticleView p, GridView g, float* volume) {
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
+void computeClothVolumes(Device d, ParticleView p, GridView g, ClothSlots cloth, float* volume) {
+  forEachClothParticle(d, cloth, SOAK_LAMBDA(int i) {
     const int phase = p.phase[i];
-    if (!isCloth(phase)) {
-      volume[i] = 0.f;
-      return;
-    }
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     float sum = 0.f;

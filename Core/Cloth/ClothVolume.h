@@ -1,13 +1,14 @@
 #pragma once
 // Volume of a cloth particle, V_i = 1 / sum_k W(x_i - x_k, h_ik) over the
 // particles k of the same cloth (itself included) at the predicted positions
-// (Akinci et al. 2012; the paper's Eq. 10 uses the same V_i). Zero for
-// particles that are not cloth.
+// (Akinci et al. 2012; the paper's Eq. 10 uses the same V_i). Written for
+// the cloth particles only; other particles' entries are left as they are.
+#include "Cloth/ForEachClothParticle.h"
 #include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"
 
 namespace soak {
 
-void computeClothVolumes(Device d, ParticleView p, GridView g, float* volume);
+void computeClothVolumes(Device d, ParticleView p, GridView g, ClothSlots cloth, float* volume);
 
 }  // namespace soak

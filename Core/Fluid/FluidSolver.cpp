@@ -61,7 +61,7 @@ void FluidSolver::resize(int n) {
 void FluidSolver::computeBoundaryVolumes(Simulation& sim) {
   ParticleView p = sim.particles.view();
   resize(p.count);
-  computeClothVolumes(device_, p, sim.grid.view(), volume_.data());
+  computeClothVolumes(device_, p, sim.grid.view(), clothSlots(sim.cloth.view()), volume_.data());
 }
 
 namespace {

@@ -39,6 +39,15 @@ void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* w
   }, what);
 }
 
+void applyCorrectionsAt(Device d, ParticleView p, const int* slots, int count, const Vec3* delta, const char* what) {
+  forEach(d, count, SOAK_LAMBDA(int k) {
+    const int i = slots[k];
+    const Vec3 dx = delta[i];
+    const Float4 x = p.predicted[i];
+    if (x.w > 0.f && (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f)) p.predicted[i] = Float4(x.xyz() + dx, x.w);
+  }, what);
+}
+
 void updateVelocities(Device d, ParticleView p, float dt, const Vec3* velocityFix) {
   const float inv = 1.f / dt;
   forEach(d, p.count, SOAK_LAMBDA(int i) {

@@ -23,6 +23,8 @@ void projectColliders(Device d, ParticleView p, const Collider* colliders, int c
 // x* += delta for every particle that moves (inverse mass > 0): the second
 // half of a Jacobi pass whose corrections were gathered into `delta`.
 void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* what);
+// The same for the `count` particles whose slots are listed in `slots` (the cloth's, say).
+void applyCorrectionsAt(Device d, ParticleView p, const int* slots, int count, const Vec3* delta, const char* what);
 
 // v = (x* - x) / dt (+ velocityFix, where given: the cloth sub-steps' end
 // velocity minus their mean); x = x*.

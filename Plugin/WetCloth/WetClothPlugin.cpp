@@ -117,6 +117,7 @@ class WetClothModule : public Module {
     a.delta = delta_.data();
     a.kappaCouple = kappa_.data();
     a.dryMass = dryMass_.data();
+    a.cloth = clothSlots(sim.cloth.view());
     return a;
   }
 

@@ -57,11 +57,10 @@ SOAK_INLINE float transferWeight(Vec3 xk, float hk, Vec3 xi, float hi, Vec3 g) {
 }  // namespace
 
 void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w) {
-  computeClothVolumes(d, p, g, a.volume);
+  computeClothVolumes(d, p, g, a.cloth, a.volume);
   const float sEW = w.sEW, c = w.c, sT = w.sT, sMax = w.sMax;
   const bool wetWeight = w.wetWeight;
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    if (!isCloth(p.phase[i])) return;
+  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
     const float V = a.volume[i];
     float held = a.held[i];
     // Water above S^EW is excess (Section 4.4): it leaves the fabric for the buffer.
@@ -100,9 +99,8 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
   // Cloth: what each cloth particle may take from each water neighbour,
   // a_ij = kappa^a (1 + eta^a cos theta_ij) (S^MAX - S_i) V_i / c (Eq. 11, in
   // kg), scaled down if the sum over its neighbours would overfill it.
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
+  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
     scale[i] = 0.f;
-    if (!isCloth(p.phase[i])) return;
     // A particle that already carries excess water (a buffer) takes no more:
     // otherwise the drips it sheds are absorbed again next step, and the
     // same water drips over and over (9,268 drips in 0.6 s from a sheet
@@ -133,8 +131,8 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     });
     ratio[j] = asked > p.mass[j] ? p.mass[j] / asked : 1.f;
   }, "wet.absorb.ratio");
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
+  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
+    if (scale[i] <= 0.f) return;
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     float gained = 0.f;
@@ -177,9 +175,8 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
   for (int it = 0; it < w.diffusionIterations; ++it) {
     // alpha_i = kappa^s sum_j a_ij / (sum_j a_ij^2 + (sum_j a_ij)^2 + eps), so
     // that Eq. 17 reads S_i* = S_i + alpha_i sum_j a_ij (S_j - S_i).
-    forEach(d, p.count, SOAK_LAMBDA(int i) {
+    forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
       alpha[i] = 0.f;
-      if (!isCloth(p.phase[i])) return;
       S[i] = saturationOf(c, a.held[i], a.volume[i]);
       const Vec3 xi = p.predicted[i].xyz();
       const float hi = p.radius[i];
@@ -195,8 +192,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
     }, "wet.diffuse.alpha");
     if (literal) {
       // Eq. 17 as written: each particle moves its own saturation (not conservative).
-      forEach(d, p.count, SOAK_LAMBDA(int i) {
-        if (!isCloth(p.phase[i])) return;
+      forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float C = 0.f;
@@ -211,9 +207,8 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
       // Conservative form: the pair (receiver r, donor d) exchanges the mass
       // of the receiver's term of Eq. 17; the donor loses what the receiver
       // gains. A donor never gives more than it holds.
-      forEach(d, p.count, SOAK_LAMBDA(int i) {
+      forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
         limit[i] = 1.f;
-        if (!isCloth(p.phase[i])) return;
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float out = 0.f;
@@ -224,8 +219,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         });
         limit[i] = out > a.held[i] ? a.held[i] / out : 1.f;
       }, "wet.diffuse.limit");
-      forEach(d, p.count, SOAK_LAMBDA(int i) {
-        if (!isCloth(p.phase[i])) return;
+      forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float change = 0.f;
@@ -242,8 +236,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         next[i] = fmaxf(a.held[i] + change, 0.f);
       }, "wet.diffuse.exchange");
     }
-    forEach(d, p.count, SOAK_LAMBDA(int i) {
-      if (!isCloth(p.phase[i])) return;
+    forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
       a.held[i] = next[i];
       S[i] = saturationOf(c, next[i], a.volume[i]);
     }, "wet.diffuse.apply");
@@ -257,10 +250,10 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   float* norm = a.scratchB;
   float* next = a.scratchC;
   const float* S = a.saturation;
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
+  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
     out[i] = 0.f;
     norm[i] = 0.f;
-    if (!isCloth(p.phase[i]) || !(a.buffer[i] > 0.f)) return;
+    if (!(a.buffer[i] > 0.f)) return;
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     // Eq. 18, second condition: |sum_{j above i} V_j S_j cos(theta_ij) grad W_ij| < |beta g|.
@@ -285,8 +278,7 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   }, "wet.emit.decide");
   // Receivers below take cos(theta_ki) W_ki of the buffer, normalised so the
   // donor's whole buffer arrives (the paper's weights do not sum to one).
-  forEach(d, p.count, SOAK_LAMBDA(int k) {
-    if (!isCloth(p.phase[k])) return;
+  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int k) {
     const Vec3 xk = p.predicted[k].xyz();
     const float hk = p.radius[k];
     float gain = 0.f;
@@ -296,8 +288,8 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
     });
     next[k] = a.buffer[k] - out[k] + gain;
   }, "wet.emit.transfer");
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    if (isCloth(p.phase[i])) a.buffer[i] = next[i];
+  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
+    a.buffer[i] = next[i];
   }, "wet.emit.apply");
 }
 
@@ -354,10 +346,10 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
   const float sT = w.sT, kAd = w.kappaAd, etaAd = w.etaAd >= 0.f ? w.etaAd : w.kappaAd * w.sT * w.sT;
   const float* S = a.saturation;
   Vec3* delta = a.delta;
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
+  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
     delta[i] = Vec3(0.f, 0.f, 0.f);
     const Float4 xi4 = p.predicted[i];
-    if (!isCloth(p.phase[i]) || xi4.w == 0.f) return;
+    if (xi4.w == 0.f) return;
     const int vi = p.id[i];
     const Vec3 xi = xi4.xyz(), resti = c.restPosition[vi];
     const float thi = c.thickness[vi];
@@ -377,7 +369,7 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
     });
     delta[i] = f * (dt * dt * xi4.w);
   }, "wet.stick");
-  applyCorrections(d, p, delta, "wet.stick.apply");
+  applyCorrectionsAt(d, p, a.cloth.slot, a.cloth.count, delta, "wet.stick.apply");
 }
 
 }  // namespace soak::wet

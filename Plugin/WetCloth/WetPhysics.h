@@ -2,6 +2,7 @@
 // The wetting stages (paper Section 4, Algorithm 1 lines 11-25) as plain
 // functions over particle arrays: each runs on the CPU and on the GPU.
 #include "Cloth/ClothSystem.h"
+#include "Cloth/ForEachClothParticle.h"
 #include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"
 #include "WetParams.h"
@@ -24,6 +25,7 @@ struct WetArrays {
   Vec3* delta = nullptr;
   float* kappaCouple = nullptr;
   const float* dryMass = nullptr;
+  ClothSlots cloth;  // the cloth particles' slots: the cloth-side passes walk these only
 };
 
 // The water particle the model was set up with (m0, h0) and gravity.
