@@ -140,6 +140,13 @@ int exclusiveScan(const int* in, int* out, int n) {
   return lastOut + last;
 }
 
+void exclusiveScanAsync(const int* in, int* out, int n) {
+  if (n <= 0) return;
+  std::size_t bytes = 0;
+  cub::DeviceScan::ExclusiveSum(nullptr, bytes, in, out, n);
+  check(cub::DeviceScan::ExclusiveSum(scratch().get(bytes), bytes, in, out, n), "exclusiveScanAsync");
+}
+
 void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits) {
   if (n <= 1) return;
   // Double buffers live in one scratch block: keys', values', then CUB's temp.

@@ -24,6 +24,7 @@ double reduceSum(const float* x, int n);
 float reduceMax(const float* x, int n);
 float reduceMin(const float* x, int n);
 int exclusiveScan(const int* in, int* out, int n);
+void exclusiveScanAsync(const int* in, int* out, int n);
 // Stable sort of (key, value) pairs by the low `keyBits` bits of key.
 void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits);
 

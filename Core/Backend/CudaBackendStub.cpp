@@ -25,5 +25,6 @@ double reduceSum(const float*, int) { refuse(); }
 float reduceMax(const float*, int) { refuse(); }
 float reduceMin(const float*, int) { refuse(); }
 int exclusiveScan(const int*, int*, int) { refuse(); }
+void exclusiveScanAsync(const int*, int*, int) { refuse(); }
 void sortPairs(std::uint32_t*, std::uint32_t*, int, int) { refuse(); }
 }  // namespace soak::cuda

@@ -13,14 +13,7 @@
 // launch is refused, it falls back to one launch per phase. The order of the
 // work within a phase is free, as in forEach; between phases it is fixed, so
 // results are the same either way.
-//
-// A list whose widest phase is small (a cloth of up to some ten thousand
-// vertices) runs in one block of 1024 threads instead, with __syncthreads
-// between phases: a grid-wide barrier and the loads after it, which miss the
-// invalidated L1, cost about 6 us per phase, a block barrier well under one
-// (Doc/performance.md measures the crossover, kSingleBlockWidest).
 #include <algorithm>
-#include <cstdlib>
 
 #include "Backend/ForEach.h"
 
@@ -32,9 +25,6 @@
 namespace soak {
 
 constexpr int kMaxPhases = 120;
-constexpr int kPhasedBlockSize = 1024;
-// Widest phase that still runs in one block (measured, Doc/performance.md).
-constexpr int kSingleBlockWidest = 16384;
 
 struct PhaseList {
   int count = 0;   // phases
@@ -66,24 +56,6 @@ __global__ void soakPhasedKernel(PhaseList phases, F f) {
       grid.sync();
     }
 }
-
-template <class F>
-__global__ void __launch_bounds__(kPhasedBlockSize, 1) soakPhasedBlockKernel(PhaseList phases, F f) {
-  for (int r = 0; r < phases.repeat; ++r)
-    for (int p = 0; p < phases.count; ++p) {
-      for (int k = phases.start[p] + int(threadIdx.x); k < phases.start[p + 1]; k += kPhasedBlockSize) f(k);
-      __syncthreads();
-    }
-}
-
-// Widest phase run in one block; SOAK_SINGLE_BLOCK_WIDEST overrides it for measurements.
-inline int singleBlockWidest() {
-  static const int widest = [] {
-    const char* s = std::getenv("SOAK_SINGLE_BLOCK_WIDEST");
-    return s ? std::atoi(s) : kSingleBlockWidest;
-  }();
-  return widest;
-}
 #endif
 
 template <class F>
@@ -93,11 +65,6 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
 #if defined(__CUDACC__)
     const int widest = phases.widest();
     if (widest == 0) return;
-    if (widest <= singleBlockWidest()) {
-      soakPhasedBlockKernel<<<1, kPhasedBlockSize>>>(phases, f);
-      checkLastLaunch(device, what);
-      return;
-    }
     static int maxBlocks = -1;  // co-resident blocks of this kernel on this GPU
     if (maxBlocks < 0) {
       int perSm = 0, sms = 0, dev = 0, cooperative = 0;

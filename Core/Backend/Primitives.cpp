@@ -62,6 +62,11 @@ int exclusiveScan(Device d, const int* in, int* out, int n) {
   return total;
 }
 
+void exclusiveScanAsync(Device d, const int* in, int* out, int n) {
+  if (d == Device::Cuda) return cuda::exclusiveScanAsync(in, out, n);
+  exclusiveScan(d, in, out, n);
+}
+
 void sortPairs(Device d, std::uint32_t* keys, std::uint32_t* values, int n, int keyBits) {
   if (d == Device::Cuda) return cuda::sortPairs(keys, values, n, keyBits);
   if (n <= 1) return;

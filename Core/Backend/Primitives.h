@@ -13,6 +13,9 @@ float reduceMax(Device d, const float* x, int n);  // -3e38 for n == 0
 float reduceMin(Device d, const float* x, int n);  // +3e38 for n == 0
 // out[i] = sum of in[0..i); returns the total.
 int exclusiveScan(Device d, const int* in, int* out, int n);
+// The same without returning the total: on the GPU nothing waits for the
+// device (exclusiveScan reads the total back, a host-device synchronisation).
+void exclusiveScanAsync(Device d, const int* in, int* out, int n);
 // Stable sort of pairs by the low keyBits bits of the key.
 void sortPairs(Device d, std::uint32_t* keys, std::uint32_t* values, int n, int keyBits);
 

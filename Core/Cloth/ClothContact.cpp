@@ -21,7 +21,7 @@ void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec
       const float thi = c.thickness[vi];
       Vec3 sum(0.f, 0.f, 0.f);
       int count = 0;
-      forEachCandidate(g, g.cellKey[i], [&](int j) {
+      forEachCandidate(g, g.slotKey[i], [&](int j) {
         const int phj = p.phase[j];
         if (j == i || !isCloth(phj)) return;
         const int vj = p.id[j];

@@ -8,6 +8,9 @@
 
 namespace soak {
 
+// `g` is any grid that holds the cloth particles: the full grid, or the
+// cloth's own (ClothSystem::grid(), which does not step over water).
+
 // `passes` Jacobi passes; `delta` is scratch of particle count.
 void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta, int passes);
 

@@ -12,7 +12,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridStart_(device), dGridEnd_(device), dGridKey_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -134,6 +134,8 @@ void ClothSystem::upload() {
   dTetherLength_.upload(tetherLength_);
   dSlot_.resize(nv);
   dVertexScratch_.resize(nv);
+  dClothSlots_.resize(nv);
+  dGridKey_.resize(nv);
   scratch_.resize(std::max<std::size_t>(edges_.size(), 1));
 }
 
@@ -159,6 +161,7 @@ ClothView ClothSystem::view() {
   v.tetherLength = dTetherLength_.data();
   v.vertexSlot = dSlot_.data();
   v.vertexScratch = dVertexScratch_.data();
+  v.clothSlots = dClothSlots_.data();
   v.vertexCount = vertexCount();
   v.edgeCount = int(dEdges_.size());
   v.bendCount = int(dBends_.size());
@@ -168,9 +171,48 @@ ClothView ClothSystem::view() {
 
 void ClothSystem::updateSlots(ParticleView p) {
   int* slot = dSlot_.data();
+  dClothFlag_.resize(std::size_t(p.count));
+  dClothOffset_.resize(std::size_t(p.count));
+  int* flag = dClothFlag_.data();
   forEach(device_, p.count, SOAK_LAMBDA(int i) {
-    if (isCloth(p.phase[i])) slot[p.id[i]] = i;
+    const bool cloth = isCloth(p.phase[i]);
+    flag[i] = cloth ? 1 : 0;
+    if (cloth) slot[p.id[i]] = i;
   }, "cloth.slots");
+  // The cloth's slots in particle (grid cell) order: the cloth passes walk
+  // these, so that a warp's lanes are all cloth and query the same cells.
+  int* offset = dClothOffset_.data();
+  exclusiveScanAsync(device_, flag, offset, p.count);
+  int* ordered = dClothSlots_.data();
+  forEach(device_, p.count, SOAK_LAMBDA(int i) {
+    if (flag[i]) ordered[offset[i]] = i;
+  }, "cloth.slots.order");
+}
+
+void ClothSystem::buildGrid(GridView g) {
+  const int* ordered = dClothSlots_.data();
+  // The cloth's grid: the same buckets as the full grid, its entries the
+  // ordered slots (already sorted by bucket, as the particles are).
+  const std::size_t buckets = std::size_t(g.bucketMask) + 1;
+  dGridStart_.resize(buckets);
+  dGridEnd_.resize(buckets);
+  dGridEnd_.fillZero();
+  std::uint32_t* start = dGridStart_.data();
+  std::uint32_t* end = dGridEnd_.data();
+  std::uint32_t* key = dGridKey_.data();
+  const int n = vertexCount();
+  forEach(device_, n, SOAK_LAMBDA(int k) {
+    const std::uint32_t kk = g.slotKey[ordered[k]];
+    key[k] = kk;
+    const std::uint32_t b = bucketOfKey(kk, g.bucketMask);
+    if (k == 0 || bucketOfKey(g.slotKey[ordered[k - 1]], g.bucketMask) != b) start[b] = std::uint32_t(k);
+    if (k == n - 1 || bucketOfKey(g.slotKey[ordered[k + 1]], g.bucketMask) != b) end[b] = std::uint32_t(k + 1);
+  }, "cloth.grid");
+  clothGrid_ = g;
+  clothGrid_.start = start;
+  clothGrid_.end = end;
+  clothGrid_.cellKey = key;
+  clothGrid_.slot = ordered;
 }
 
 void ClothSystem::resetMultipliers() {

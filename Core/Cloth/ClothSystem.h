@@ -10,6 +10,7 @@
 #include "Backend/Buffer.h"
 #include "Cloth/ClothConstraints.h"
 #include "Cloth/ClothTopology.h"
+#include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"
 
 namespace soak {
@@ -43,6 +44,7 @@ struct ClothView {
   const int* attachCollider = nullptr; // per vertex: collider index it moves with, or -1
   const float* thickness = nullptr;    // per vertex: cloth thickness (contact distance), m
   int* vertexSlot = nullptr;           // per vertex: current particle slot
+  const int* clothSlots = nullptr;     // the cloth particles' slots in increasing order (vertexCount of them)
   Float4* vertexScratch = nullptr;     // per vertex: predicted position in vertex order, during the constraint solve
   // Long-range attachments ("tethers", Kim et al. 2012): vertex v stays
   // within tetherLength of pinned vertex tetherPin (kTethers per vertex, -1: none).
@@ -92,8 +94,17 @@ class ClothSystem {
   float maxEdgeLength() const { return maxEdgeLength_; }
   float maxThickness() const { return maxThickness_; }
   ClothView view();
-  // Recomputes vertexSlot from the particles' ids (after a reorder).
+  // Recomputes vertexSlot and clothSlots from the particles' ids and phases
+  // (after a reorder); nothing waits for the device.
   void updateSlots(ParticleView p);
+  // Builds the cloth's own grid from the full grid `g` just built (after
+  // updateSlots); nothing waits for the device.
+  void buildGrid(GridView g);
+  // The grid over the cloth particles alone (GridView.h), valid until the
+  // particles are sorted again: queries for cloth neighbours visit the same
+  // cloth particles in the same order as through the full grid, without
+  // stepping over the water around them.
+  GridView grid() const { return clothGrid_; }
   // Zeroes the XPBD multipliers (start of each step).
   void resetMultipliers();
   // Largest relative edge strain |l - l0| / l0 over all edges.
@@ -131,6 +142,9 @@ class ClothSystem {
   Buffer<int> dTetherPin_;
   Buffer<Vec3> dRest_;
   Buffer<Float4> dVertexScratch_;
+  Buffer<int> dClothFlag_, dClothOffset_, dClothSlots_;  // per particle, per particle, per vertex
+  Buffer<std::uint32_t> dGridStart_, dGridEnd_, dGridKey_;  // the cloth grid: per bucket, per bucket, per vertex
+  GridView clothGrid_;
   Buffer<float> scratch_;
 };
 

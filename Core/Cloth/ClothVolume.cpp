@@ -11,7 +11,7 @@ void computeClothVolumes(Device d, ParticleView p, GridView g, ClothSlots cloth,
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     float sum = 0.f;
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
+    forEachCandidate(g, g.slotKey[i], [&](int j) {
       if (p.phase[j] != phase) return;
       sum += poly6(lengthSquared(xi - p.predicted[j].xyz()), pairSupport(hi, p.radius[j]));
     });

@@ -3,6 +3,7 @@
 // particles k of the same cloth (itself included) at the predicted positions
 // (Akinci et al. 2012; the paper's Eq. 10 uses the same V_i). Written for
 // the cloth particles only; other particles' entries are left as they are.
+// `g` is any grid that holds the cloth particles (the cloth's own is fastest).
 #include "Cloth/ForEachClothParticle.h"
 #include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"

@@ -113,6 +113,7 @@ SOAK_INLINE void forEachTriangleNearPath(const GridView& g, const ParticleView& 
 // cloth particles around them. `vertexStiffness` (per cloth vertex, may be
 // null for 1) gives kappa_couple of a triangle as the mean of its vertices
 // (Eq. 22 is this mean); the correction is scaled by Eq. 5 for `passes`.
+// `g` is any grid that holds the cloth particles (the cloth's own is fastest).
 void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
                             int passes);
 

@@ -16,7 +16,7 @@ SOAK_INLINE void forEachFluidCandidate(const ParticleView& p, const GridView& g,
   if (!water && !(isCloth(phi) && xi4.w > 0.f)) return;
   const Vec3 xi = xi4.xyz();
   const float hi = p.radius[i];
-  forEachCandidate(g, g.cellKey[i], [&](int j) {
+  forEachCandidate(g, g.slotKey[i], [&](int j) {
     const int phj = p.phase[j];
     if (water ? (!isWater(phj) && !isCloth(phj)) : !isWater(phj)) return;
     const float h = pairSupport(hi, p.radius[j]) * reach;

@@ -61,7 +61,7 @@ void FluidSolver::resize(int n) {
 void FluidSolver::computeBoundaryVolumes(Simulation& sim) {
   ParticleView p = sim.particles.view();
   resize(p.count);
-  computeClothVolumes(device_, p, sim.grid.view(), clothSlots(sim.cloth.view()), volume_.data());
+  computeClothVolumes(device_, p, sim.cloth.grid(), clothSlots(sim.cloth.view()), volume_.data());
 }
 
 namespace {
@@ -214,7 +214,7 @@ template <class F>
 SOAK_INLINE void forEachWaterNeighbour(const GridView& g, const ParticleView& p, int i, F&& f) {
   const Vec3 xi = p.position[i].xyz();
   const float hi = p.radius[i];
-  forEachCandidate(g, g.cellKey[i], [&](int j) {
+  forEachCandidate(g, g.slotKey[i], [&](int j) {
     if (j == i || !isWater(p.phase[j])) return;
     const Vec3 xij = xi - p.position[j].xyz();
     const float r2 = lengthSquared(xij);
@@ -291,7 +291,7 @@ void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
     const Vec3 xi = p.position[i].xyz();
     const float hi = p.radius[i];
     float dens = 0.f;
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
+    forEachCandidate(g, g.slotKey[i], [&](int j) {
       const int phj = p.phase[j];
       const float h = pairSupport(hi, p.radius[j]);
       const float r2 = lengthSquared(xi - p.position[j].xyz());

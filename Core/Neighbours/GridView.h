@@ -12,6 +12,12 @@
 // accepted only if its own cell key equals the visited cell's key: each
 // particle is then visited at most once per query, because the 27 cells
 // around any cell have 27 distinct keys.
+//
+// A grid may also index a subset of the particles (the cloth's, Cloth/
+// ClothGrid): its entries are then that subset's slots in increasing order,
+// `slot` maps an entry to its particle slot, and the queries below call f
+// with particle slots either way. The subset keeps the full grid's order, so
+// a query visits the subset's particles in the same order as the full grid.
 #include <cmath>
 #include <cstdint>
 
@@ -25,8 +31,14 @@ struct GridView {
   std::uint32_t bucketMask = 0;
   const std::uint32_t* start = nullptr;    // per bucket
   const std::uint32_t* end = nullptr;      // per bucket (0 for an empty bucket)
-  const std::uint32_t* cellKey = nullptr;  // per particle slot
+  const std::uint32_t* cellKey = nullptr;  // per entry (for the full grid: per particle slot)
+  const std::uint32_t* slotKey = nullptr;  // per particle slot: its cell key (query centres)
+  const int* slot = nullptr;               // per entry: its particle slot; null: the entry is the slot
 };
+
+SOAK_INLINE int slotOfEntry(const GridView& g, std::uint32_t j) {
+  return g.slot ? g.slot[j] : static_cast<int>(j);
+}
 
 constexpr std::uint32_t kCellWrap = 1024u;
 
@@ -74,7 +86,7 @@ SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, F&
         const std::uint32_t b = bucketOfKey(key, g.bucketMask);
         const std::uint32_t e = g.end[b];
         for (std::uint32_t j = g.start[b]; j < e; ++j)
-          if (g.cellKey[j] == key) f(static_cast<int>(j));
+          if (g.cellKey[j] == key) f(slotOfEntry(g, j));
       }
     }
   }
@@ -104,7 +116,7 @@ SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, F&& 
         const std::uint32_t bucket = bucketOfKey(key, g.bucketMask);
         const std::uint32_t e = g.end[bucket];
         for (std::uint32_t j = g.start[bucket]; j < e; ++j)
-          if (g.cellKey[j] == key) f(static_cast<int>(j));
+          if (g.cellKey[j] == key) f(slotOfEntry(g, j));
       }
 }
 

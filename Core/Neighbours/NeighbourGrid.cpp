@@ -106,6 +106,7 @@ GridView NeighbourGrid::view() const {
   g.start = start_.data();
   g.end = end_.data();
   g.cellKey = cellKey_.data();
+  g.slotKey = cellKey_.data();
   return g;
 }
 

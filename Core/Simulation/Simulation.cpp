@@ -45,6 +45,7 @@ void Simulation::addCoreStages() {
                      s.grid.build(s.particles, s.maxSupportRadius());
                      if (!s.cloth.empty()) {
                        s.cloth.updateSlots(s.particles.view());
+                       s.cloth.buildGrid(s.grid.view());
                        s.fluid.computeBoundaryVolumes(s);
                      }
                    }});
@@ -55,9 +56,9 @@ void Simulation::addCoreStages() {
                      ClothView c = s.cloth.view();
                      s.contactDelta_.resize(p.count);
                      auto contacts = [&s, c](ParticleView view) {
-                       resolveClothContacts(s.device(), view, s.grid.view(), c, s.contactDelta_.data(),
+                       resolveClothContacts(s.device(), view, s.cloth.grid(), c, s.contactDelta_.data(),
                                             s.contactPasses);
-                       resolveVertexTriangleContacts(s.device(), view, s.grid.view(), c, s.contactDelta_.data());
+                       resolveVertexTriangleContacts(s.device(), view, s.cloth.grid(), c, s.contactDelta_.data());
                      };
                      if (s.settings.clothSubsteps > 1) {
                        s.substepStart_.resize(p.count);
@@ -86,7 +87,7 @@ void Simulation::addCoreStages() {
                    }});
   pipeline.append({"coupling", [](Simulation& s) {
                      if (s.cloth.empty()) return;
-                     projectWaterOutOfCloth(s.device(), s.particles.view(), s.grid.view(), s.cloth.view(),
+                     projectWaterOutOfCloth(s.device(), s.particles.view(), s.cloth.grid(), s.cloth.view(),
                                             s.couplingStiffness, s.couplingPasses);
                    }});
   pipeline.append({"finalize", [](Simulation& s) {

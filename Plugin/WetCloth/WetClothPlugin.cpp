@@ -118,6 +118,7 @@ class WetClothModule : public Module {
     a.kappaCouple = kappa_.data();
     a.dryMass = dryMass_.data();
     a.cloth = clothSlots(sim.cloth.view());
+    a.clothGrid = sim.cloth.grid();
     return a;
   }
 

@@ -57,7 +57,7 @@ SOAK_INLINE float transferWeight(Vec3 xk, float hk, Vec3 xi, float hi, Vec3 g) {
 }  // namespace
 
 void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w) {
-  computeClothVolumes(d, p, g, a.cloth, a.volume);
+  computeClothVolumes(d, p, a.clothGrid, a.cloth, a.volume);
   const float sEW = w.sEW, c = w.c, sT = w.sT, sMax = w.sMax;
   const bool wetWeight = w.wetWeight;
   forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
@@ -111,7 +111,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     float factors = 0.f;
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
+    forEachCandidate(g, g.slotKey[i], [&](int j) {
       if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
       factors += absorptionFactor(xi, hi, p.predicted[j].xyz(), p.radius[j], etaA, gd);
     });
@@ -125,7 +125,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     const Vec3 xj = p.predicted[j].xyz();
     const float hj = p.radius[j];
     float asked = 0.f;
-    forEachCandidate(g, g.cellKey[j], [&](int i) {
+    forEachCandidate(a.clothGrid, g.slotKey[j], [&](int i) {
       if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
       asked += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd);
     });
@@ -136,7 +136,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     float gained = 0.f;
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
+    forEachCandidate(g, g.slotKey[i], [&](int j) {
       if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
       gained += scale[i] * absorptionFactor(xi, hi, p.predicted[j].xyz(), p.radius[j], etaA, gd) * ratio[j];
     });
@@ -147,7 +147,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     const Vec3 xj = p.predicted[j].xyz();
     const float hj = p.radius[j];
     float given = 0.f;
-    forEachCandidate(g, g.cellKey[j], [&](int i) {
+    forEachCandidate(a.clothGrid, g.slotKey[j], [&](int i) {
       if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
       given += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd) * ratio[j];
     });
@@ -181,7 +181,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
       const Vec3 xi = p.predicted[i].xyz();
       const float hi = p.radius[i];
       float sum = 0.f, sum2 = 0.f;
-      forEachCandidate(g, g.cellKey[i], [&](int j) {
+      forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
         if (j == i || p.phase[j] != p.phase[i]) return;
         const float aij = diffusionWeight(xi, hi, p.predicted[j].xyz(), p.radius[j], kD, etaD, rho0, gd);
         sum += aij;
@@ -196,7 +196,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float C = 0.f;
-        forEachCandidate(g, g.cellKey[i], [&](int j) {
+        forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
           if (j == i || p.phase[j] != p.phase[i]) return;
           C += diffusionWeight(xi, hi, p.predicted[j].xyz(), p.radius[j], kD, etaD, rho0, gd) * (S[j] - S[i]);
         });
@@ -212,7 +212,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float out = 0.f;
-        forEachCandidate(g, g.cellKey[i], [&](int j) {
+        forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
           if (j == i || p.phase[j] != p.phase[i] || !(S[j] < S[i])) return;
           out += diffusionFlux(p.predicted[j].xyz(), p.radius[j], S[j], alpha[j], a.volume[j], xi, hi, S[i], kD, etaD,
                                rho0, gd, c);
@@ -223,7 +223,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float change = 0.f;
-        forEachCandidate(g, g.cellKey[i], [&](int j) {
+        forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
           if (j == i || p.phase[j] != p.phase[i]) return;
           const Vec3 xj = p.predicted[j].xyz();
           if (S[j] > S[i])
@@ -259,7 +259,7 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
     // Eq. 18, second condition: |sum_{j above i} V_j S_j cos(theta_ij) grad W_ij| < |beta g|.
     Vec3 pull(0.f, 0.f, 0.f);
     float below = 0.f;
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
+    forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
       if (j == i || p.phase[j] != p.phase[i]) return;
       const Vec3 xj = p.predicted[j].xyz();
       const Vec3 xij = xi - xj;
@@ -282,7 +282,7 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
     const Vec3 xk = p.predicted[k].xyz();
     const float hk = p.radius[k];
     float gain = 0.f;
-    forEachCandidate(g, g.cellKey[k], [&](int i) {
+    forEachCandidate(a.clothGrid, g.slotKey[k], [&](int i) {
       if (i == k || p.phase[i] != p.phase[k] || !(out[i] > 0.f)) return;
       gain += out[i] * transferWeight(xk, hk, p.predicted[i].xyz(), p.radius[i], gd) / norm[i];
     });
@@ -320,7 +320,7 @@ void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
     const Vec3 xj = p.predicted[j].xyz();
     const float hj = p.radius[j];
     Vec3 f(0.f, 0.f, 0.f);
-    forEachCandidate(g, g.cellKey[j], [&](int i) {
+    forEachCandidate(a.clothGrid, g.slotKey[j], [&](int i) {
       if (!isCloth(p.phase[i])) return;
       const Vec3 xij = p.predicted[i].xyz() - xj;
       const float r2 = lengthSquared(xij);
@@ -354,7 +354,7 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
     const Vec3 xi = xi4.xyz(), resti = c.restPosition[vi];
     const float thi = c.thickness[vi];
     Vec3 f(0.f, 0.f, 0.f);
-    forEachCandidate(g, g.cellKey[i], [&](int j) {
+    forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
       if (j == i || !isCloth(p.phase[j])) return;
       const int vj = p.id[j];
       const float reach = thi + c.thickness[vj];  // touching: within two half-thicknesses each side

@@ -26,6 +26,7 @@ struct WetArrays {
   float* kappaCouple = nullptr;
   const float* dryMass = nullptr;
   ClothSlots cloth;  // the cloth particles' slots: the cloth-side passes walk these only
+  GridView clothGrid;  // the grid over the cloth particles alone: queries for cloth neighbours use it
 };
 
 // The water particle the model was set up with (m0, h0) and gravity.

@@ -25,7 +25,7 @@ TEST(NeighbourSearch, EachCandidateVisitedOncePerQuery) {
   grid.build(ps, 0.04f);
   GridView g = grid.view();
   std::vector<int> visits(ps.count(), 0);
-  forEachCandidate(g, g.cellKey[0], [&](int j) { ++visits[j]; });
+  forEachCandidate(g, g.slotKey[0], [&](int j) { ++visits[j]; });
   for (int v : visits) EXPECT_EQ(v, 1);
 }
 
