@@ -78,73 +78,8 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
   forEach(d, vertices, SOAK_LAMBDA(int v) { p.predicted[c.vertexSlot[v]] = x[v]; }, "cloth.constraints.scatter");
 }
 
-void solveClothConstraintsJacobi(Device d, ParticleView p, ClothView c, int iterations, float dt, float relaxation) {
-  const int vertices = c.vertexCount, edges = c.edgeCount, bends = c.bendCount;
-  const int correct = edges + bends;  // phase 1: [0, correct) constraints; phase 2: the vertices
-  PhaseList phases;
-  phases.repeat = iterations;
-  phases.add(0, correct);
-  phases.add(correct, correct + vertices);
-  Float4* x = c.vertexScratch;
-  forEach(d, vertices, SOAK_LAMBDA(int v) { x[v] = p.predicted[c.vertexSlot[v]]; }, "cloth.jacobi.gather");
-  forEachPhased(d, phases, SOAK_LAMBDA(int k) {
-    if (k < edges) {
-      // Stretch (Eq. 8), from the positions every constraint of this iteration sees.
-      const ClothEdge edge = c.edges[k];
-      const Float4 xa = x[edge.a], xb = x[edge.b];
-      projectStretch(xa.xyz(), xa.w, xb.xyz(), xb.w, c.edgeRest[k], c.edgeStiffness[k], dt, c.edgeLambda[k],
-                     c.edgeCorrection[2 * k], c.edgeCorrection[2 * k + 1]);
-    } else if (k < correct) {
-      // Bending (Eq. 9).
-      const int b = k - edges;
-      const ClothBend bend = c.bends[b];
-      Vec3 q[4], dx[4];
-      float w[4];
-      for (int a = 0; a < 4; ++a) {
-        const Float4 xa = x[bend.v[a]];
-        q[a] = xa.xyz();
-        w[a] = xa.w;
-      }
-      projectBend(q, w, c.bendRest[b], c.bendStiffness[b], dt, c.bendLambda[b], dx);
-      for (int a = 0; a < 4; ++a) c.bendCorrection[4 * b + a] = dx[a];
-    } else {
-      // Each vertex: the mean of its stretch and of its bend corrections, then its tethers.
-      const int v = k - correct;
-      const Float4 xv = x[v];
-      if (xv.w == 0.f) return;
-      Vec3 stretch(0.f, 0.f, 0.f), bend(0.f, 0.f, 0.f);
-      const int e0 = c.vertexEdgeStart[v], e1 = c.vertexEdgeStart[v + 1];
-      for (int e = e0; e < e1; ++e) stretch += c.edgeCorrection[c.vertexEdgeEntries[e]];
-      const int b0 = c.vertexBendStart[v], b1 = c.vertexBendStart[v + 1];
-      for (int e = b0; e < b1; ++e) bend += c.bendCorrection[c.vertexBendEntries[e]];
-      Vec3 q = xv.xyz();
-      if (e1 > e0) q += stretch * (relaxation / float(e1 - e0));
-      if (b1 > b0) q += bend * (relaxation / float(b1 - b0));
-      for (int t = 0; t < kTethers; ++t) {
-        const int pin = c.tetherPin[v * kTethers + t];
-        if (pin < 0) break;
-        const Vec3 anchor = x[pin].xyz();  // pins do not move in the solve
-        const Vec3 dd = q - anchor;
-        const float len = length(dd), maxLen = c.tetherLength[v * kTethers + t];
-        if (len > maxLen) q = anchor + dd * (maxLen / len);
-      }
-      x[v] = Float4(q, xv.w);
-    }
-  }, "cloth.jacobi");
-  forEach(d, vertices, SOAK_LAMBDA(int v) { p.predicted[c.vertexSlot[v]] = x[v]; }, "cloth.jacobi.scatter");
-}
-
-void solveCloth(Device d, ParticleView p, ClothSystem& cloth, ClothSolverChoice solver, float dt) {
-  cloth.resetMultipliers();
-  if (solver.jacobi)
-    solveClothConstraintsJacobi(d, p, cloth.view(), solver.iterations, dt, solver.relaxation);
-  else
-    solveClothConstraints(d, p, cloth.view(), cloth.edgeColourStart(), cloth.bendColourStart(), solver.iterations,
-                          dt);
-}
-
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, ClothSolverChoice solver,
+                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations,
                   ClothSubstepScratch s, const std::function<void(ParticleView)>& contacts) {
   const ClothView c = cloth.view();
   const float h = dt / float(substeps);
@@ -178,7 +113,8 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
       s.velocity[i] = vel;
       p.predicted[i] = Float4(s.start[i].xyz() + vel * h, x.w);
     }, "cloth.substep.predict");
-    solveCloth(d, p, cloth, solver, h);
+    cloth.resetMultipliers();
+    solveClothConstraints(d, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), iterations, h);
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
       const int i = c.vertexSlot[v];
       const Float4 xp = p.predicted[i];

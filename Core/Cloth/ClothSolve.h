@@ -16,22 +16,6 @@ void moveAttachedVertices(Device d, ParticleView p, ClothView c, const Collider*
 void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vector<int>& stretchColours,
                            const std::vector<int>& bendColours, int iterations, float dt);
 
-// The same constraints solved Jacobi-style (needs ClothSystem::prepareJacobi):
-// in each iteration every constraint computes its corrections from the same
-// positions (Eq. 8 and 9 as above), then every vertex moves by
-// `relaxation` x (the mean of its stretch corrections + the mean of its bend
-// corrections) and applies its tethers. Two phases per iteration instead of
-// one per colour (27 on the paper's sheets): far fewer grid-wide barriers on
-// the GPU, at the price of slower convergence (Doc/model.md, "Jacobi cloth").
-void solveClothConstraintsJacobi(Device d, ParticleView p, ClothView c, int iterations, float dt, float relaxation);
-
-// How the cloth stage solves its constraints (<Simulation clothSolver=...>).
-struct ClothSolverChoice {
-  int iterations = 8;
-  bool jacobi = false;
-  float relaxation = 1.f;  // Jacobi only
-};
-
 // Buffers of the cloth sub-steps, per particle slot.
 struct ClothSubstepScratch {
   Float4* start = nullptr;      // position (and inverse mass) at the start of the sub-step
@@ -51,10 +35,7 @@ struct ClothSubstepScratch {
 // predicted positions and velocityFix, which finalize adds to (x* - x) / dt so
 // that a cloth particle leaves the step with its last sub-step's velocity.
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, ClothSolverChoice solver,
+                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations,
                   ClothSubstepScratch scratch, const std::function<void(ParticleView)>& contacts);
-
-// One constraint solve of the cloth stage, as `solver` says (resets the multipliers first).
-void solveCloth(Device d, ParticleView p, ClothSystem& cloth, ClothSolverChoice solver, float dt);
 
 }  // namespace soak

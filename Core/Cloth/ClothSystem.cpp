@@ -12,7 +12,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridStart_(device), dGridEnd_(device), dGridKey_(device), dEdgeCorrection_(device), dBendCorrection_(device), dVertexEdgeStart_(device), dVertexEdgeEntries_(device), dVertexBendStart_(device), dVertexBendEntries_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridStart_(device), dGridEnd_(device), dGridKey_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -162,12 +162,6 @@ ClothView ClothSystem::view() {
   v.vertexSlot = dSlot_.data();
   v.vertexScratch = dVertexScratch_.data();
   v.clothSlots = dClothSlots_.data();
-  v.edgeCorrection = dEdgeCorrection_.data();
-  v.bendCorrection = dBendCorrection_.data();
-  v.vertexEdgeStart = dVertexEdgeStart_.data();
-  v.vertexEdgeEntries = dVertexEdgeEntries_.data();
-  v.vertexBendStart = dVertexBendStart_.data();
-  v.vertexBendEntries = dVertexBendEntries_.data();
   v.vertexCount = vertexCount();
   v.edgeCount = int(dEdges_.size());
   v.bendCount = int(dBends_.size());
@@ -219,36 +213,6 @@ void ClothSystem::buildGrid(GridView g) {
   clothGrid_.end = end;
   clothGrid_.cellKey = key;
   clothGrid_.slot = ordered;
-}
-
-namespace {
-// CSR of the correction entries of each vertex: entry e (constraint k's
-// vertex s, e = k * vertices per constraint + s) moves vertex vertices[e].
-void incidence(const std::vector<int>& vertices, int vertexCount, std::vector<int>& start, std::vector<int>& entries) {
-  start.assign(std::size_t(vertexCount) + 1, 0);
-  for (int v : vertices) ++start[std::size_t(v) + 1];
-  for (int v = 0; v < vertexCount; ++v) start[v + 1] += start[v];
-  entries.assign(vertices.size(), 0);
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (std::size_t e = 0; e < vertices.size(); ++e) entries[std::size_t(fill[vertices[e]]++)] = int(e);
-}
-}  // namespace
-
-void ClothSystem::prepareJacobi() {
-  const int nv = vertexCount();
-  const std::vector<ClothEdge> edges = dEdges_.download();
-  const std::vector<ClothBend> bends = dBends_.download();
-  std::vector<int> ev, bv, start, entries;
-  for (const ClothEdge& e : edges) ev.insert(ev.end(), {e.a, e.b});
-  for (const ClothBend& b : bends) bv.insert(bv.end(), {b.v[0], b.v[1], b.v[2], b.v[3]});
-  incidence(ev, nv, start, entries);
-  dVertexEdgeStart_.upload(start);
-  dVertexEdgeEntries_.upload(entries);
-  incidence(bv, nv, start, entries);
-  dVertexBendStart_.upload(start);
-  dVertexBendEntries_.upload(entries);
-  dEdgeCorrection_.resize(std::max<std::size_t>(ev.size(), 1));
-  dBendCorrection_.resize(std::max<std::size_t>(bv.size(), 1));
 }
 
 void ClothSystem::resetMultipliers() {

@@ -45,16 +45,6 @@ struct ClothView {
   const float* thickness = nullptr;    // per vertex: cloth thickness (contact distance), m
   int* vertexSlot = nullptr;           // per vertex: current particle slot
   const int* clothSlots = nullptr;     // the cloth particles' slots in increasing order (vertexCount of them)
-  // Jacobi solve (ClothSystem::prepareJacobi; null otherwise): each constraint
-  // writes one correction per vertex it moves (edge e, end s: 2e + s; bend b,
-  // vertex s: 4b + s), and each vertex sums its own (CSR per vertex, in
-  // constraint order, so the sum is the same on every device).
-  Vec3* edgeCorrection = nullptr;
-  Vec3* bendCorrection = nullptr;
-  const int* vertexEdgeStart = nullptr;
-  const int* vertexEdgeEntries = nullptr;
-  const int* vertexBendStart = nullptr;
-  const int* vertexBendEntries = nullptr;
   Float4* vertexScratch = nullptr;     // per vertex: predicted position in vertex order, during the constraint solve
   // Long-range attachments ("tethers", Kim et al. 2012): vertex v stays
   // within tetherLength of pinned vertex tetherPin (kTethers per vertex, -1: none).
@@ -115,8 +105,6 @@ class ClothSystem {
   // cloth particles in the same order as through the full grid, without
   // stepping over the water around them.
   GridView grid() const { return clothGrid_; }
-  // Allocates what the Jacobi constraint solve needs (after upload()).
-  void prepareJacobi();
   // Zeroes the XPBD multipliers (start of each step).
   void resetMultipliers();
   // Largest relative edge strain |l - l0| / l0 over all edges.
@@ -155,9 +143,7 @@ class ClothSystem {
   Buffer<Vec3> dRest_;
   Buffer<Float4> dVertexScratch_;
   Buffer<int> dClothFlag_, dClothOffset_, dClothSlots_;  // per particle, per particle, per vertex
-  Buffer<std::uint32_t> dGridStart_, dGridEnd_, dGridKey_;
-  Buffer<Vec3> dEdgeCorrection_, dBendCorrection_;
-  Buffer<int> dVertexEdgeStart_, dVertexEdgeEntries_, dVertexBendStart_, dVertexBendEntries_;  // the cloth grid: per bucket, per bucket, per vertex
+  Buffer<std::uint32_t> dGridStart_, dGridEnd_, dGridKey_;  // the cloth grid: per bucket, per bucket, per vertex
   GridView clothGrid_;
   Buffer<float> scratch_;
 };

@@ -22,8 +22,6 @@ class SimulationModule : public Module {
     sim.settings.maxSpeed = p_.realf("maxSpeed");
     sim.settings.clothIterations = int(p_.integer("clothIterations"));
     sim.settings.clothSubsteps = int(p_.integer("clothSubsteps"));
-    sim.settings.clothJacobi = p_.text("clothSolver") == "jacobi";
-    sim.settings.clothRelaxation = p_.realf("clothRelaxation");
     sim.settings.domainMin = p_.vector("domainMin");
     sim.settings.domainMax = p_.vector("domainMax");
     sim.couplingPasses = int(p_.integer("couplingPasses"));
@@ -210,13 +208,6 @@ void registerCoreElements(ModuleRegistry& r) {
                      "Cloth sub-steps per step: gravity, constraints and colliders of the cloth advance in steps "
                      "of timeStep / clothSubsteps (less stretch than the same number of iterations in one step).",
                      1, 100)
-            .choice("clothSolver", {"gauss-seidel", "jacobi"}, "gauss-seidel",
-                    "Cloth constraints colour by colour (gauss-seidel) or all at once, each vertex taking the "
-                    "mean of its corrections (jacobi: 2 phases per iteration instead of one per colour, faster "
-                    "on the GPU, more stretch per iteration; Doc/model.md).")
-            .real("clothRelaxation", "", "1",
-                  "Over-relaxation of the jacobi cloth solve: a vertex moves this times the mean of its "
-                  "stretch corrections plus the mean of its bend corrections.", 0.0, 2.0, true)
             .integer("couplingPasses", "2", "Passes of the water-triangle constraint (Eq. 21) per step.", 1, 100)
             .integer("contactPasses", "2", "Passes of cloth self and cloth-cloth contact per step.", 0, 100)
             .vector("domainMin", "m", "-1000 -1000 -1000", "Water below this corner is removed (drained).")

@@ -27,7 +27,6 @@ void Simulation::initialize() {
   fluid.configure(water);
   for (auto& m : modules_) m->setup(*this);
   cloth.upload();
-  if (settings.clothJacobi) cloth.prepareJacobi();
   cloth.updateSlots(particles.view());
   std::vector<Vec3> sinkCorners;
   for (const auto& box : sinks) sinkCorners.insert(sinkCorners.end(), {box.first, box.second});
@@ -67,13 +66,15 @@ void Simulation::addCoreStages() {
                        s.velocityFix_.resize(p.count);
                        substepCloth(s.device(), p, s.cloth, s.deviceColliders(), int(s.colliders.size()),
                                     kCollisionRadiusScale, s.settings.gravity, float(s.settings.timeStep),
-                                    s.settings.clothSubsteps, s.clothSolver(),
+                                    s.settings.clothSubsteps, s.settings.clothIterations,
                                     {s.substepStart_.data(), s.substepVelocity_.data(), s.velocityFix_.data()},
                                     contacts);
                        return;
                      }
                      moveAttachedVertices(s.device(), p, c, s.deviceColliders());
-                     solveCloth(s.device(), p, s.cloth, s.clothSolver(), float(s.settings.timeStep));
+                     s.cloth.resetMultipliers();
+                     solveClothConstraints(s.device(), p, c, s.cloth.edgeColourStart(), s.cloth.bendColourStart(),
+                                           s.settings.clothIterations, float(s.settings.timeStep));
                      // Colliders first, so that contact sees a layer resting on the floor where it is.
                      projectColliders(s.device(), p, s.deviceColliders(), int(s.colliders.size()),
                                       kCollisionRadiusScale, float(s.settings.timeStep));

@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "Backend/Buffer.h"
-#include "Cloth/ClothSolve.h"
 #include "Cloth/ClothSystem.h"
 #include "Fluid/FluidSolver.h"
 #include "Neighbours/NeighbourGrid.h"
@@ -50,9 +49,6 @@ class Simulation {
   void loadState(StateReader& in);
 
   SimulationSettings settings;
-  ClothSolverChoice clothSolver() const {
-    return {settings.clothIterations, settings.clothJacobi, settings.clothRelaxation};
-  }
   WaterSettings water;
   ParticleState particles;
   NeighbourGrid grid;
