@@ -12,7 +12,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridStart_(device), dGridEnd_(device), dGridKey_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridStart_(device), dGridEnd_(device), dGridKey_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -127,6 +127,14 @@ void ClothSystem::upload() {
     for (int a = 0; a < 3; ++a) list[fill[triangles_[t].v[a]]++] = int(t);
   dTriStart_.upload(start);
   dTriList_.upload(list);
+  std::vector<int> firstStart(nv + 1, 0);
+  for (const auto& t : triangles_) ++firstStart[t.v[0] + 1];
+  for (int v = 0; v < nv; ++v) firstStart[v + 1] += firstStart[v];
+  std::vector<ClothTriangle> firstList(triangles_.size());
+  std::vector<int> next(firstStart.begin(), firstStart.end() - 1);
+  for (const auto& t : triangles_) firstList[next[t.v[0]]++] = t;
+  dFirstTriStart_.upload(firstStart);
+  dFirstTri_.upload(firstList);
   dRest_.upload(restPosition_);
   dAttach_.upload(attach_);
   dThickness_.upload(thickness_);
@@ -152,6 +160,8 @@ ClothView ClothSystem::view() {
   v.triangles = dTriangles_.data();
   v.vertexTriangleStart = dTriStart_.data();
   v.vertexTriangles = dTriList_.data();
+  v.firstVertexTriangleStart = dFirstTriStart_.data();
+  v.firstVertexTriangles = dFirstTri_.data();
   v.restPosition = dRest_.data();
   v.attachCollider = dAttach_.data();
   v.thickness = dThickness_.data();

@@ -40,6 +40,10 @@ struct ClothView {
   const ClothTriangle* triangles = nullptr;
   const int* vertexTriangleStart = nullptr;  // CSR: triangles touching each vertex
   const int* vertexTriangles = nullptr;
+  // The triangles whose first vertex is v, copied in place (CSR): the
+  // triangle searches visit each triangle from its first vertex only.
+  const int* firstVertexTriangleStart = nullptr;
+  const ClothTriangle* firstVertexTriangles = nullptr;
   const Vec3* restPosition = nullptr;  // per vertex, as created
   const int* attachCollider = nullptr; // per vertex: collider index it moves with, or -1
   const float* thickness = nullptr;    // per vertex: cloth thickness (contact distance), m
@@ -137,7 +141,8 @@ class ClothSystem {
   Buffer<float> dBendRest_, dBendLambda_;
   Buffer<ConstraintStiffness> dBendStiffness_;
   Buffer<ClothTriangle> dTriangles_;
-  Buffer<int> dTriStart_, dTriList_, dAttach_, dSlot_;
+  Buffer<int> dTriStart_, dTriList_, dAttach_, dSlot_, dFirstTriStart_;
+  Buffer<ClothTriangle> dFirstTri_;
   Buffer<float> dThickness_, dTetherLength_;
   Buffer<int> dTetherPin_;
   Buffer<Vec3> dRest_;

@@ -102,10 +102,8 @@ SOAK_INLINE void forEachTriangleNearPath(const GridView& g, const ParticleView& 
   const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
   forEachClothNearPath(g, p, x0, x, reach, [&](int j) {
     const int v = p.id[j];
-    for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
-      const ClothTriangle t = c.triangles[c.vertexTriangles[k]];
-      if (t.v[0] == v) f(t, j);
-    }
+    const int end = c.firstVertexTriangleStart[v + 1];
+    for (int k = c.firstVertexTriangleStart[v]; k < end; ++k) f(c.firstVertexTriangles[k], j);
   });
 }
 
