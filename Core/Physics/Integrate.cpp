@@ -31,21 +31,21 @@ void projectColliders(Device d, ParticleView p, const Collider* colliders, int c
   }, "colliders");
 }
 
+namespace {
+// x*_i += delta_i if particle i moves and has a correction.
+SOAK_INLINE void applyCorrection(const ParticleView& p, int i, const Vec3* delta) {
+  const Vec3 dx = delta[i];
+  const Float4 x = p.predicted[i];
+  if (x.w > 0.f && (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f)) p.predicted[i] = Float4(x.xyz() + dx, x.w);
+}
+}  // namespace
+
 void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* what) {
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    const Vec3 dx = delta[i];
-    const Float4 x = p.predicted[i];
-    if (x.w > 0.f && (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f)) p.predicted[i] = Float4(x.xyz() + dx, x.w);
-  }, what);
+  forEach(d, p.count, SOAK_LAMBDA(int i) { applyCorrection(p, i, delta); }, what);
 }
 
 void applyCorrectionsAt(Device d, ParticleView p, const int* slots, int count, const Vec3* delta, const char* what) {
-  forEach(d, count, SOAK_LAMBDA(int k) {
-    const int i = slots[k];
-    const Vec3 dx = delta[i];
-    const Float4 x = p.predicted[i];
-    if (x.w > 0.f && (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f)) p.predicted[i] = Float4(x.xyz() + dx, x.w);
-  }, what);
+  forEach(d, count, SOAK_LAMBDA(int k) { applyCorrection(p, slots[k], delta); }, what);
 }
 
 void updateVelocities(Device d, ParticleView p, float dt, const Vec3* velocityFix) {
