@@ -65,21 +65,24 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
 #if defined(__CUDACC__)
     const int widest = phases.widest();
     if (widest == 0) return;
+    // 256 threads a block: 128 was within 3 % on fig9b and fig6b, 512 and
+    // 1024 were 12-15 % slower (H100, Doc/performance.md).
+    constexpr int blockSize = kForEachBlockSize;
     static int maxBlocks = -1;  // co-resident blocks of this kernel on this GPU
     if (maxBlocks < 0) {
       int perSm = 0, sms = 0, dev = 0, cooperative = 0;
       cudaGetDevice(&dev);
       cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, dev);
       cudaDeviceGetAttribute(&cooperative, cudaDevAttrCooperativeLaunch, dev);
-      cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, soakPhasedKernel<F>, kForEachBlockSize, 0);
+      cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, soakPhasedKernel<F>, blockSize, 0);
       maxBlocks = cooperative ? perSm * sms : 0;
     }
-    const int blocks = std::min((widest + kForEachBlockSize - 1) / kForEachBlockSize, maxBlocks);
+    const int blocks = std::min((widest + blockSize - 1) / blockSize, maxBlocks);
     if (blocks > 0) {
       PhaseList list = phases;
       void* args[] = {static_cast<void*>(&list), static_cast<void*>(&f)};
       if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(soakPhasedKernel<F>), dim3(blocks),
-                                      dim3(kForEachBlockSize), args, 0, nullptr) == cudaSuccess) {
+                                      dim3(blockSize), args, 0, nullptr) == cudaSuccess) {
         checkLastLaunch(device, what);
         return;
       }

@@ -46,6 +46,7 @@ SOAK_INLINE bool isFinite(float v) {
 #endif
 }
 SOAK_INLINE bool isFinite(Vec3 a) { return isFinite(a.x) && isFinite(a.y) && isFinite(a.z); }
+SOAK_INLINE bool isZero(Vec3 a) { return a.x == 0.f && a.y == 0.f && a.z == 0.f; }
 // Unit vector, or zero for a (near) zero vector.
 SOAK_INLINE Vec3 normalizedOrZero(Vec3 a) {
   float l = length(a);

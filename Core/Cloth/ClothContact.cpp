@@ -10,18 +10,20 @@ namespace soak {
 void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta, int passes) {
   const ClothSlots cloth = clothSlots(c);
   for (int pass = 0; pass < passes; ++pass) {
-    forEachClothParticle(d, cloth, SOAK_LAMBDA(int i) {
-      delta[i] = Vec3(0.f, 0.f, 0.f);
+    forEachClothParticleLanes(d, cloth, SOAK_LAMBDA(int i, Lanes lanes) {
       const int phi = p.phase[i];
       const Float4 xi4 = p.predicted[i];
-      if (xi4.w == 0.f) return;
+      if (xi4.w == 0.f) {
+        if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
+        return;
+      }
       const Vec3 xi = xi4.xyz();
       const int vi = p.id[i];
       const Vec3 resti = c.restPosition[vi];
       const float thi = c.thickness[vi];
       Vec3 sum(0.f, 0.f, 0.f);
       int count = 0;
-      forEachCandidate(g, g.slotKey[i], [&](int j) {
+      forEachCandidate(g, g.slotKey[i], lanes, [&](int j) {
         const int phj = p.phase[j];
         if (j == i || !isCloth(phj)) return;
         const int vj = p.id[j];
@@ -41,7 +43,9 @@ void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec
         sum += n * ((contact - along) * xi4.w / (xi4.w + xj4.w));
         ++count;
       });
-      if (count > 0) delta[i] = sum / float(count);
+      sum = laneSum(lanes, sum);
+      count = laneSum(lanes, count);
+      if (lanes.leader()) delta[i] = count > 0 ? sum / float(count) : Vec3(0.f, 0.f, 0.f);
     }, "cloth.contact");
     applyCorrectionsAt(d, p, cloth.slot, cloth.count, delta, "cloth.contact.apply");
   }
@@ -61,29 +65,51 @@ SOAK_INLINE bool touchesOneRing(const ClothView& c, int v, const ClothTriangle& 
 void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta) {
   if (c.triangleCount == 0) return;
   const ClothSlots cloth = clothSlots(c);
-  forEachClothParticle(d, cloth, SOAK_LAMBDA(int i) {
-    delta[i] = Vec3(0.f, 0.f, 0.f);
+  forEachClothParticleLanes(d, cloth, SOAK_LAMBDA(int i, Lanes lanes) {
     const Float4 xi4 = p.predicted[i];
-    if (xi4.w == 0.f) return;
+    if (xi4.w == 0.f) {
+      if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
+      return;
+    }
     const int vi = p.id[i];
-    const Vec3 x0 = p.position[i].xyz();
+    const Vec3 x0 = p.position[i].xyz(), start = xi4.xyz();
     const float dist = 0.5f * c.thickness[vi];
-    Vec3 x = xi4.xyz();
-    forEachTriangleNearPath(g, p, c, x0, x, [&](const ClothTriangle& t, int j) {
-      if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) return;
+    // The same side test as water (Eq. 21); the vertex takes the whole correction.
+    const auto correction = [&](const ClothTriangle& t, Vec3 x) {
+      if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) return Vec3(0.f, 0.f, 0.f);
       const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
-      // The same side test as water (Eq. 21); the vertex takes the whole correction.
-      const Vec3 corr = triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(),
-                                                   p.position[sc].xyz(), p.predicted[sa].xyz(),
-                                                   p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist, 0.f);
-      if (corr.x == 0.f && corr.y == 0.f && corr.z == 0.f) return;
+      return triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(), p.position[sc].xyz(),
+                                        p.predicted[sa].xyz(), p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist,
+                                        0.f);
+    };
+    // With several lanes, they first look for any triangle that would
+    // correct the vertex where it is; if none would, neither would the
+    // sequential pass below (its corrections are taken at the vertex's
+    // current position, which then never changes). Corrections are rare:
+    // most vertices stop here. One lane (the CPU) goes straight on.
+    if (lanes.size > 1) {
+      bool due = false;
+      forEachTriangleNearPath(g, p, c, x0, start, lanes, [&](const ClothTriangle& t, int) {
+        if (!due) due = !isZero(correction(t, start));
+      });
+      const bool any = laneAny(lanes, due);
+      if (!lanes.leader()) return;
+      if (!any) {
+        delta[i] = Vec3(0.f, 0.f, 0.f);
+        return;
+      }
+    }
+    Vec3 x = start;
+    forEachTriangleNearPath(g, p, c, x0, start, Lanes{}, [&](const ClothTriangle& t, int j) {
+      const Vec3 corr = correction(t, x);
+      if (isZero(corr)) return;
       // A triangle that shares a vertex with one of the vertex's own
       // triangles is its own surface, not another layer (checked only
       // here, where a correction is due).
       if (p.phase[j] == p.phase[i] && touchesOneRing(c, vi, t)) return;
       x += corr;
     });
-    delta[i] = x - xi4.xyz();
+    delta[i] = x - start;
   }, "cloth.vertexTriangle");
   applyCorrectionsAt(d, p, cloth.slot, cloth.count, delta, "cloth.vertexTriangle.apply");
 }

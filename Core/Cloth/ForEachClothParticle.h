@@ -30,4 +30,12 @@ void forEachClothParticle(Device d, ClothSlots cloth, F f, const char* what = "f
   forEach(d, cloth.count, SOAK_LAMBDA(int v) { f(slot[v]); }, what);
 }
 
+// The same with f(i, lanes): a group of lanes per cloth particle on the GPU
+// (Base/Lanes.h), for passes that loop over neighbours.
+template <class F>
+void forEachClothParticleLanes(Device d, ClothSlots cloth, F f, const char* what = "forEachClothParticleLanes") {
+  const int* slot = cloth.slot;
+  forEachLanes(d, cloth.count, SOAK_LAMBDA(int v, Lanes lanes) { f(slot[v], lanes); }, what);
+}
+
 }  // namespace soak

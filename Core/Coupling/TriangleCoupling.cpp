@@ -8,21 +8,36 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
                             int passes) {
   if (c.triangleCount == 0) return;
   for (int pass = 0; pass < passes; ++pass) {
-    forEach(d, p.count, SOAK_LAMBDA(int i) {
+    forEachLanes(d, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
       if (!isWater(p.phase[i])) return;
       const Vec3 x0 = p.position[i].xyz();
-      Vec3 x = p.predicted[i].xyz();
-      bool moved = false;
+      const Vec3 start = p.predicted[i].xyz();
       // Every cell the path and the triangles around it can touch: a fast
       // particle (a falling block lands at 3 m/s, 4.5 cm a step, more than a
       // cell) can cross cloth that lies around where it started.
-      forEachTriangleNearPath(g, p, c, x0, x, [&](const ClothTriangle& t, int) {
+      const auto correction = [&](const ClothTriangle& t, Vec3 x) {
         const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
         const float dist = 0.5f * c.thickness[t.v[0]];
-        const Vec3 corr = triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(),
-                                                     p.position[sc].xyz(), p.predicted[sa].xyz(),
-                                                     p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist);
-        if (corr.x == 0.f && corr.y == 0.f && corr.z == 0.f) return;
+        return triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(), p.position[sc].xyz(),
+                                          p.predicted[sa].xyz(), p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist);
+      };
+      // With several lanes, they first look for any triangle that corrects
+      // the particle where it is; if none does, the sequential pass below
+      // would not move it either (each correction is taken at the
+      // particle's current position, and that never changes). One lane (the
+      // CPU) goes straight on.
+      if (lanes.size > 1) {
+        bool due = false;
+        forEachTriangleNearPath(g, p, c, x0, start, lanes, [&](const ClothTriangle& t, int) {
+          if (!due) due = !isZero(correction(t, start));
+        });
+        if (!laneAny(lanes, due) || !lanes.leader()) return;
+      }
+      Vec3 x = start;
+      bool moved = false;
+      forEachTriangleNearPath(g, p, c, x0, start, Lanes{}, [&](const ClothTriangle& t, int) {
+        const Vec3 corr = correction(t, x);
+        if (isZero(corr)) return;
         float kappa = 1.f;
         if (vertexStiffness)
           kappa = (vertexStiffness[t.v[0]] + vertexStiffness[t.v[1]] + vertexStiffness[t.v[2]]) / 3.f;

@@ -75,15 +75,17 @@ SOAK_INLINE float triangleReach(float maxEdgeLength, float d) { return 1.5f * ma
 // Calls f(j) for every cloth slot j within `reach` of the path x0 -> x
 // (the candidates whose triangles can matter). The cells searched extend a
 // quarter cell further: a slot is listed under the cell it was in when the
-// grid was built, and cloth moves in its own solve after that.
+// grid was built, and cloth moves in its own solve after that. With
+// `lanes`, this lane's share of them (Base/Lanes.h).
 template <class F>
-SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, Vec3 x0, Vec3 x, float reach, F&& f) {
+SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, Vec3 x0, Vec3 x, float reach,
+                                      const Lanes& lanes, F&& f) {
   const float r = reach + 0.25f / g.invCellSize;
   const Vec3 lo(fminf(x0.x, x.x) - r, fminf(x0.y, x.y) - r, fminf(x0.z, x.z) - r);
   const Vec3 hi(fmaxf(x0.x, x.x) + r, fmaxf(x0.y, x.y) + r, fmaxf(x0.z, x.z) + r);
   const Vec3 path = x - x0;
   const float len2 = lengthSquared(path);
-  forEachCandidateInBox(g, lo, hi, [&](int j) {
+  forEachCandidateInBox(g, lo, hi, lanes, [&](int j) {
     if (!isCloth(p.phase[j])) return;
     // Within reach of the path (point-segment distance).
     const Vec3 y = p.predicted[j].xyz();
@@ -98,9 +100,9 @@ SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, 
 // visited; all three vertices lie within reach).
 template <class F>
 SOAK_INLINE void forEachTriangleNearPath(const GridView& g, const ParticleView& p, const ClothView& c, Vec3 x0, Vec3 x,
-                                         F&& f) {
+                                         const Lanes& lanes, F&& f) {
   const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
-  forEachClothNearPath(g, p, x0, x, reach, [&](int j) {
+  forEachClothNearPath(g, p, x0, x, reach, lanes, [&](int j) {
     const int v = p.id[j];
     const int end = c.firstVertexTriangleStart[v + 1];
     for (int k = c.firstVertexTriangleStart[v]; k < end; ++k) f(c.firstVertexTriangles[k], j);

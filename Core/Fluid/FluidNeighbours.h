@@ -25,10 +25,17 @@ struct FluidNeighbourView {
   const int* index = nullptr;  // neighbour slots
 };
 
+// Calls f(j) for the listed neighbours of i (with `lanes`: this lane's
+// share, every lanes.size-th from lanes.index; Base/Lanes.h).
+template <class F>
+SOAK_INLINE void forEachListedNeighbour(const FluidNeighbourView& n, int i, const Lanes& lanes, F&& f) {
+  const int s = n.start[i], e = s + n.count[i];
+  for (int k = s + lanes.index; k < e; k += lanes.size) f(n.index[k]);
+}
+
 template <class F>
 SOAK_INLINE void forEachListedNeighbour(const FluidNeighbourView& n, int i, F&& f) {
-  const int s = n.start[i], e = s + n.count[i];
-  for (int k = s; k < e; ++k) f(n.index[k]);
+  forEachListedNeighbour(n, i, Lanes{}, f);
 }
 
 class FluidNeighbours {

@@ -22,6 +22,7 @@
 #include <cstdint>
 
 #include "Base/HostDevice.h"
+#include "Base/Lanes.h"
 #include "Base/Vec3.h"
 
 namespace soak {
@@ -74,22 +75,36 @@ SOAK_INLINE std::uint32_t bucketOfKey(std::uint32_t key, std::uint32_t bucketMas
   return morton & bucketMask;
 }
 
-// Calls f(j) once for every slot j whose cell is one of the 27 cells around
-// the cell with key `centerKey`. The caller applies its own distance test.
+// Calls f(j) for the slots j of the cell with key `key` that are this
+// lane's: of the cell's bucket's entries, every lanes.size-th from
+// lanes.index (all of them, in order, for one lane).
 template <class F>
-SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, F&& f) {
+SOAK_INLINE void forEachInCell(const GridView& g, std::uint32_t key, const Lanes& lanes, F&& f) {
+  const std::uint32_t b = bucketOfKey(key, g.bucketMask);
+  const std::uint32_t e = g.end[b];
+  for (std::uint32_t j = g.start[b] + std::uint32_t(lanes.index); j < e; j += std::uint32_t(lanes.size))
+    if (g.cellKey[j] == key) f(slotOfEntry(g, j));
+}
+
+// Calls f(j) once for every slot j whose cell is one of the 27 cells around
+// the cell with key `centerKey` (with `lanes`: this lane's share of them).
+// The caller applies its own distance test.
+template <class F>
+SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, const Lanes& lanes, F&& f) {
   const std::uint32_t cx = centerKey & 1023u, cy = (centerKey >> 10) & 1023u, cz = (centerKey >> 20) & 1023u;
   for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         const std::uint32_t key = ((cx + dx) & 1023u) | (((cy + dy) & 1023u) << 10) | (((cz + dz) & 1023u) << 20);
-        const std::uint32_t b = bucketOfKey(key, g.bucketMask);
-        const std::uint32_t e = g.end[b];
-        for (std::uint32_t j = g.start[b]; j < e; ++j)
-          if (g.cellKey[j] == key) f(slotOfEntry(g, j));
+        forEachInCell(g, key, lanes, f);
       }
     }
   }
+}
+
+template <class F>
+SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, F&& f) {
+  forEachCandidate(g, centerKey, Lanes{}, f);
 }
 
 // Calls f(j) once for every slot j whose cell overlaps the box [lo, hi]
@@ -98,7 +113,7 @@ SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, F&
 // follows a moving particle's whole path when it is longer.
 constexpr int kMaxBoxCells = 8;
 template <class F>
-SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, F&& f) {
+SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, const Lanes& lanes, F&& f) {
   int a[3] = {cellCoordinate(lo.x, g.invCellSize), cellCoordinate(lo.y, g.invCellSize),
               cellCoordinate(lo.z, g.invCellSize)};
   int b[3] = {cellCoordinate(hi.x, g.invCellSize), cellCoordinate(hi.y, g.invCellSize),
@@ -111,13 +126,12 @@ SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, F&& 
     }
   for (int z = a[2]; z <= b[2]; ++z)
     for (int y = a[1]; y <= b[1]; ++y)
-      for (int x = a[0]; x <= b[0]; ++x) {
-        const std::uint32_t key = packCellKey(x, y, z);
-        const std::uint32_t bucket = bucketOfKey(key, g.bucketMask);
-        const std::uint32_t e = g.end[bucket];
-        for (std::uint32_t j = g.start[bucket]; j < e; ++j)
-          if (g.cellKey[j] == key) f(slotOfEntry(g, j));
-      }
+      for (int x = a[0]; x <= b[0]; ++x) forEachInCell(g, packCellKey(x, y, z), lanes, f);
+}
+
+template <class F>
+SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, F&& f) {
+  forEachCandidateInBox(g, lo, hi, Lanes{}, f);
 }
 
 // Same, around an arbitrary point.

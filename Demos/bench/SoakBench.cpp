@@ -4,6 +4,7 @@
 // Table 2 plus per-stage times, throughput and device memory per particle.
 //
 //   soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]
+//              [--scale-sheet paper|dense]   (the scale scenes' sheet: see scaleCase)
 //              [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]
 //              [--set Element.attr=value ...]   (applied to every case, e.g. to compare solver variants)
 //
@@ -94,27 +95,53 @@ long long parseCount(const std::string& s) {
 }
 
 // A water block of about 3/4 n particles (spacing 0.02 m) falls 5 cm onto a
-// sheet of about n/4 vertices pinned at four corners, 1.3 times the block's width.
-Case scaleCase(long long n, int warmupSteps) {
-  const int side = std::max(2, int(std::lround(std::cbrt(0.75 * double(n)))));
+// sheet of about n/4 vertices pinned at four corners.
+//
+// "paper" sheet (the default): the vertices 1 cm apart, as in the Table 2
+// scenes (a 120 x 120 sheet over 1.2 m), so that a cloth particle has as
+// many cloth neighbours within h as there: about 50. The water is a slab
+// over the middle of the sheet (1/1.3 of its width), as deep as 3/4 n
+// particles make it (about 0.4 m at every size).
+//
+// "dense" sheet (the first version, kept for comparison): the sheet is 1.3
+// times the width of a cubic block, so its vertices crowd closer as n grows
+// (4.7 mm at 1M, 3.2 mm at 10M) and a cloth particle has about 230 cloth
+// neighbours within h: the cloth-cloth passes then cost 4-5 times the
+// paper scenes' per particle.
+enum class ScaleSheet { Paper, Dense };
+
+Case scaleCase(long long n, int warmupSteps, ScaleSheet sheet) {
   const int verts = std::max(2, int(std::lround(std::sqrt(0.25 * double(n)))));
-  const double block = side * 0.02, width = 1.3 * block;
+  const double water = 0.75 * double(n), spacing = 0.02;
+  double width, across, depth;  // sheet width; the block's width and depth
+  if (sheet == ScaleSheet::Dense) {
+    const int side = std::max(2, int(std::lround(std::cbrt(water))));
+    across = depth = side * spacing;
+    width = 1.3 * across;
+  } else {
+    width = 0.01 * (verts - 1);
+    const int side = std::max(2, int(std::floor(width / 1.3 / spacing)));
+    const int layers = std::max(1, int(std::lround(water / (double(side) * side))));
+    across = side * spacing;
+    depth = layers * spacing;
+  }
   std::ostringstream x;
   x << "<Scene>\n"
     << "  <Simulation timeStep='0.015' clothSubsteps='1'/>\n"
     << "  <Water/>\n"
     << "  <Cloth origin='" << -width / 2 << " 1 " << -width / 2 << "' width='" << width << "' height='" << width
     << "' cellsU='" << verts - 1 << "' cellsV='" << verts - 1 << "' pinCorners='u0v0 u1v0 u0v1 u1v1' tetherSlack='0.1'/>\n"
-    << "  <WaterBlock min='" << -block / 2 << " 1.05 " << -block / 2 << "' max='" << block / 2 << " "
-    << 1.05 + block << " " << block / 2 << "'/>\n"
+    << "  <WaterBlock min='" << -across / 2 << " 1.05 " << -across / 2 << "' max='" << across / 2 << " "
+    << 1.05 + depth << " " << across / 2 << "'/>\n"
     << "  <Plane point='0 0 0' normal='0 1 0'/>\n"
     << "  <WetCloth/>\n"
     << "</Scene>\n";
   Case c;
   std::ostringstream name;
-  name << "scale " << (n >= 1000000 ? std::to_string(n / 1000000) + "M" : std::to_string(n / 1000) + "k");
+  name << "scale " << (n >= 1000000 ? std::to_string(n / 1000000) + "M" : std::to_string(n / 1000) + "k")
+       << (sheet == ScaleSheet::Dense ? " dense" : "");
   c.name = name.str();
-  c.scenePath = "<scale " + std::to_string(n) + ">";
+  c.scenePath = "<scale " + std::to_string(n) + (sheet == ScaleSheet::Dense ? " dense" : "") + ">";
   c.text = x.str();
   c.warmupSteps = warmupSteps;
   return c;
@@ -244,6 +271,7 @@ std::vector<std::string> splitList(const std::string& s) {
 int usage() {
   std::fprintf(stderr,
                "usage: soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]\n"
+               "                  [--scale-sheet paper|dense]\n"
                "                  [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]\n"
                "                  [--set Element.attr=value ...]\n");
   return 2;
@@ -253,6 +281,7 @@ int usage() {
 
 int main(int argc, char** argv) {
   std::string deviceName = "auto", scenes = "Scenes", json, only, scale;
+  ScaleSheet sheet = ScaleSheet::Paper;
   int steps = 50, warmupSteps = 20;
   bool table2 = true;
   std::vector<std::string> overrides;
@@ -267,6 +296,11 @@ int main(int argc, char** argv) {
       else if (a == "--scenes") scenes = next();
       else if (a == "--only") only = next();
       else if (a == "--scale") scale = next();
+      else if (a == "--scale-sheet") {
+        const std::string v = next();
+        if (v != "paper" && v != "dense") throw InputError("soak-bench: --scale-sheet takes paper or dense, not '" + v + "'");
+        sheet = v == "dense" ? ScaleSheet::Dense : ScaleSheet::Paper;
+      }
       else if (a == "--steps") steps = std::stoi(next());
       else if (a == "--warmup-steps") warmupSteps = std::stoi(next());
       else if (a == "--json") json = next();
@@ -293,7 +327,7 @@ int main(int argc, char** argv) {
         if (take) cases.push_back(c);
       }
     }
-    for (const std::string& s : splitList(scale)) cases.push_back(scaleCase(parseCount(s), warmupSteps));
+    for (const std::string& s : splitList(scale)) cases.push_back(scaleCase(parseCount(s), warmupSteps, sheet));
     std::vector<Result> results;
     for (const Case& c : cases) {
       std::fprintf(stderr, "soak-bench: %s ...\n", c.name.c_str());

@@ -99,8 +99,8 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
   // Cloth: what each cloth particle may take from each water neighbour,
   // a_ij = kappa^a (1 + eta^a cos theta_ij) (S^MAX - S_i) V_i / c (Eq. 11, in
   // kg), scaled down if the sum over its neighbours would overfill it.
-  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-    scale[i] = 0.f;
+  forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+    if (lanes.leader()) scale[i] = 0.f;
     // A particle that already carries excess water (a buffer) takes no more:
     // otherwise the drips it sheds are absorbed again next step, and the
     // same water drips over and over (9,268 drips in 0.6 s from a sheet
@@ -111,10 +111,12 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     float factors = 0.f;
-    forEachCandidate(g, g.slotKey[i], [&](int j) {
+    forEachCandidate(g, g.slotKey[i], lanes, [&](int j) {
       if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
       factors += absorptionFactor(xi, hi, p.predicted[j].xyz(), p.radius[j], etaA, gd);
     });
+    factors = laneSum(lanes, factors);
+    if (!lanes.leader()) return;
     const float demand = kA * cap * factors;
     scale[i] = demand > cap ? cap / factors : kA * cap;
   }, "wet.absorb.demand");
@@ -131,16 +133,17 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     });
     ratio[j] = asked > p.mass[j] ? p.mass[j] / asked : 1.f;
   }, "wet.absorb.ratio");
-  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
+  forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
     if (scale[i] <= 0.f) return;
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     float gained = 0.f;
-    forEachCandidate(g, g.slotKey[i], [&](int j) {
+    forEachCandidate(g, g.slotKey[i], lanes, [&](int j) {
       if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
       gained += scale[i] * absorptionFactor(xi, hi, p.predicted[j].xyz(), p.radius[j], etaA, gd) * ratio[j];
     });
-    a.held[i] += gained;
+    gained = laneSum(lanes, gained);
+    if (lanes.leader()) a.held[i] += gained;
   }, "wet.absorb.cloth");
   forEach(d, p.count, SOAK_LAMBDA(int j) {
     if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
@@ -175,31 +178,35 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
   for (int it = 0; it < w.diffusionIterations; ++it) {
     // alpha_i = kappa^s sum_j a_ij / (sum_j a_ij^2 + (sum_j a_ij)^2 + eps), so
     // that Eq. 17 reads S_i* = S_i + alpha_i sum_j a_ij (S_j - S_i).
-    forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-      alpha[i] = 0.f;
-      S[i] = saturationOf(c, a.held[i], a.volume[i]);
+    forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
       const Vec3 xi = p.predicted[i].xyz();
       const float hi = p.radius[i];
       float sum = 0.f, sum2 = 0.f;
-      forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
+      forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
         if (j == i || p.phase[j] != p.phase[i]) return;
         const float aij = diffusionWeight(xi, hi, p.predicted[j].xyz(), p.radius[j], kD, etaD, rho0, gd);
         sum += aij;
         sum2 += aij * aij;
       });
+      sum = laneSum(lanes, sum);
+      sum2 = laneSum(lanes, sum2);
+      if (!lanes.leader()) return;
+      S[i] = saturationOf(c, a.held[i], a.volume[i]);
       const float den = sum2 + sum * sum * (1.f + eps);
       alpha[i] = den > 0.f ? kS * sum / den : 0.f;
     }, "wet.diffuse.alpha");
     if (literal) {
       // Eq. 17 as written: each particle moves its own saturation (not conservative).
-      forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
+      forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float C = 0.f;
-        forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
+        forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
           if (j == i || p.phase[j] != p.phase[i]) return;
           C += diffusionWeight(xi, hi, p.predicted[j].xyz(), p.radius[j], kD, etaD, rho0, gd) * (S[j] - S[i]);
         });
+        C = laneSum(lanes, C);
+        if (!lanes.leader()) return;
         const float Snew = fminf(fmaxf(S[i] + alpha[i] * C, 0.f), sMax);
         next[i] = Snew * a.volume[i] / c;
       }, "wet.diffuse.literal");
@@ -207,23 +214,23 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
       // Conservative form: the pair (receiver r, donor d) exchanges the mass
       // of the receiver's term of Eq. 17; the donor loses what the receiver
       // gains. A donor never gives more than it holds.
-      forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-        limit[i] = 1.f;
+      forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float out = 0.f;
-        forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
+        forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
           if (j == i || p.phase[j] != p.phase[i] || !(S[j] < S[i])) return;
           out += diffusionFlux(p.predicted[j].xyz(), p.radius[j], S[j], alpha[j], a.volume[j], xi, hi, S[i], kD, etaD,
                                rho0, gd, c);
         });
-        limit[i] = out > a.held[i] ? a.held[i] / out : 1.f;
+        out = laneSum(lanes, out);
+        if (lanes.leader()) limit[i] = out > a.held[i] ? a.held[i] / out : 1.f;
       }, "wet.diffuse.limit");
-      forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
+      forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float change = 0.f;
-        forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
+        forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
           if (j == i || p.phase[j] != p.phase[i]) return;
           const Vec3 xj = p.predicted[j].xyz();
           if (S[j] > S[i])
@@ -233,7 +240,8 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
             change -= diffusionFlux(xj, p.radius[j], S[j], alpha[j], a.volume[j], xi, hi, S[i], kD, etaD, rho0, gd, c) *
                       limit[i];
         });
-        next[i] = fmaxf(a.held[i] + change, 0.f);
+        change = laneSum(lanes, change);
+        if (lanes.leader()) next[i] = fmaxf(a.held[i] + change, 0.f);
       }, "wet.diffuse.exchange");
     }
     forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
@@ -250,16 +258,18 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   float* norm = a.scratchB;
   float* next = a.scratchC;
   const float* S = a.saturation;
-  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-    out[i] = 0.f;
-    norm[i] = 0.f;
+  forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+    if (lanes.leader()) {
+      out[i] = 0.f;
+      norm[i] = 0.f;
+    }
     if (!(a.buffer[i] > 0.f)) return;
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
     // Eq. 18, second condition: |sum_{j above i} V_j S_j cos(theta_ij) grad W_ij| < |beta g|.
     Vec3 pull(0.f, 0.f, 0.f);
     float below = 0.f;
-    forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
+    forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
       if (j == i || p.phase[j] != p.phase[i]) return;
       const Vec3 xj = p.predicted[j].xyz();
       const Vec3 xij = xi - xj;
@@ -271,22 +281,25 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
       if (cosT > 0.f) pull += spikyGradient(xij, r, h) * (a.volume[j] * S[j] * cosT);
       below += transferWeight(xj, p.radius[j], xi, hi, gd);
     });
-    if (length(pull) < threshold && below > 0.f) {
+    pull = laneSum(lanes, pull);
+    below = laneSum(lanes, below);
+    if (lanes.leader() && length(pull) < threshold && below > 0.f) {
       out[i] = a.buffer[i];
       norm[i] = below;
     }
   }, "wet.emit.decide");
   // Receivers below take cos(theta_ki) W_ki of the buffer, normalised so the
   // donor's whole buffer arrives (the paper's weights do not sum to one).
-  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int k) {
+  forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int k, Lanes lanes) {
     const Vec3 xk = p.predicted[k].xyz();
     const float hk = p.radius[k];
     float gain = 0.f;
-    forEachCandidate(a.clothGrid, g.slotKey[k], [&](int i) {
+    forEachCandidate(a.clothGrid, g.slotKey[k], lanes, [&](int i) {
       if (i == k || p.phase[i] != p.phase[k] || !(out[i] > 0.f)) return;
       gain += out[i] * transferWeight(xk, hk, p.predicted[i].xyz(), p.radius[i], gd) / norm[i];
     });
-    next[k] = a.buffer[k] - out[k] + gain;
+    gain = laneSum(lanes, gain);
+    if (lanes.leader()) next[k] = a.buffer[k] - out[k] + gain;
   }, "wet.emit.transfer");
   forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
     a.buffer[i] = next[i];
@@ -346,15 +359,17 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
   const float sT = w.sT, kAd = w.kappaAd, etaAd = w.etaAd >= 0.f ? w.etaAd : w.kappaAd * w.sT * w.sT;
   const float* S = a.saturation;
   Vec3* delta = a.delta;
-  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-    delta[i] = Vec3(0.f, 0.f, 0.f);
+  forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
     const Float4 xi4 = p.predicted[i];
-    if (xi4.w == 0.f) return;
+    if (xi4.w == 0.f) {
+      if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
+      return;
+    }
     const int vi = p.id[i];
     const Vec3 xi = xi4.xyz(), resti = c.restPosition[vi];
     const float thi = c.thickness[vi];
     Vec3 f(0.f, 0.f, 0.f);
-    forEachCandidate(a.clothGrid, g.slotKey[i], [&](int j) {
+    forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
       if (j == i || !isCloth(p.phase[j])) return;
       const int vj = p.id[j];
       const float reach = thi + c.thickness[vj];  // touching: within two half-thicknesses each side
@@ -367,7 +382,8 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
       const float mag = stickingMagnitude(S[i], S[j], sT, kAd, etaAd) * poly6(r2, reach) / poly6(0.f, reach);
       f += xij * (mag / sqrtf(r2));
     });
-    delta[i] = f * (dt * dt * xi4.w);
+    f = laneSum(lanes, f);
+    if (lanes.leader()) delta[i] = f * (dt * dt * xi4.w);
   }, "wet.stick");
   applyCorrectionsAt(d, p, a.cloth.slot, a.cloth.count, delta, "wet.stick.apply");
 }

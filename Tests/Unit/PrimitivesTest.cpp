@@ -4,6 +4,7 @@
 #include <random>
 
 #include "Backend/Buffer.h"
+#include "Backend/ForEach.h"
 #include "Backend/Primitives.h"
 
 using namespace soak;
@@ -45,4 +46,14 @@ TEST(Primitives, BufferGrowsAndKeepsContents) {
   b.reserve(100);
   EXPECT_EQ(b.download(), (std::vector<int>{1, 2, 3}));
   EXPECT_GE(deviceBytesInUse(Device::Cpu), 100 * sizeof(int));
+}
+
+// How many GPU threads share a particle's neighbour loop (ForEach.h).
+TEST(Lanes, GroupWidthFillsTheGpuAndRespectsTheMinimum) {
+  EXPECT_EQ(lanesFor(2500), 16);       // fig7's cloth: 16 lanes
+  EXPECT_EQ(lanesFor(98000), 16);      // fig9b's particles
+  EXPECT_EQ(lanesFor(250000), 4);      // the 1M scale scene's cloth
+  EXPECT_EQ(lanesFor(1 << 20), 1);     // enough threads without sharing
+  EXPECT_EQ(lanesFor(10000000, 4), 4); // a minimum is kept
+  EXPECT_EQ(lanesFor(100, 32), 32);    // and may exceed 16
 }

@@ -1,0 +1,64 @@
+#pragma once
+// Lanes: several GPU threads sharing one particle's neighbour loop.
+//
+// A pass that sums over a particle's neighbours is a chain of dependent
+// loads (cell range, candidate, its position...) run by one thread. Where a
+// pass has few particles (a 14.4k-vertex cloth on 132 SMs) the chain's
+// latency is the pass's time: fig9b's vertex-triangle contact took 682 us a
+// launch. With `Lanes`, a group of `size` adjacent threads of a warp takes
+// the same particle; lane k visits the k-th, (k + size)-th... candidate of
+// each cell or list, and the partial sums are combined with laneSum (a
+// butterfly of warp shuffles: every lane ends with the same bits, so the
+// result does not depend on which lane writes it).
+//
+// On the CPU (and wherever a pass is not split) a group is one lane: the loops
+// then visit candidates in exactly the old order, so CPU results are
+// unchanged. Every lane of a group must reach each laneSum/laneAny, so a pass
+// may return early only on conditions that are the same for the whole group
+// (those of the particle itself), and writes a per-particle result from the
+// leader only.
+#include "Base/HostDevice.h"
+#include "Base/Vec3.h"
+
+namespace soak {
+
+struct Lanes {
+  int index = 0;        // this thread's lane within its group
+  int size = 1;         // lanes per particle (a power of two, at most 32)
+  unsigned mask = 1u;   // the group's lanes within the warp (for the shuffles)
+  SOAK_INLINE bool leader() const { return index == 0; }
+};
+
+SOAK_INLINE float laneSum(const Lanes& l, float v) {
+#if defined(__CUDA_ARCH__)
+  for (int o = l.size / 2; o > 0; o /= 2) v += __shfl_xor_sync(l.mask, v, o, l.size);
+#else
+  (void)l;
+#endif
+  return v;
+}
+
+SOAK_INLINE int laneSum(const Lanes& l, int v) {
+#if defined(__CUDA_ARCH__)
+  for (int o = l.size / 2; o > 0; o /= 2) v += __shfl_xor_sync(l.mask, v, o, l.size);
+#else
+  (void)l;
+#endif
+  return v;
+}
+
+SOAK_INLINE Vec3 laneSum(const Lanes& l, Vec3 v) {
+  return Vec3(laneSum(l, v.x), laneSum(l, v.y), laneSum(l, v.z));
+}
+
+// Whether any lane of the group passes true.
+SOAK_INLINE bool laneAny(const Lanes& l, bool b) {
+#if defined(__CUDA_ARCH__)
+  return __any_sync(l.mask, b) != 0;
+#else
+  (void)l;
+  return b;
+#endif
+}
+
+}  // namespace soak
