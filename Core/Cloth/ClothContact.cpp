@@ -64,6 +64,7 @@ SOAK_INLINE bool touchesOneRing(const ClothView& c, int v, const ClothTriangle& 
 
 void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta) {
   if (c.triangleCount == 0) return;
+  snapshotTriangles(d, p, c);
   const ClothSlots cloth = clothSlots(c);
   forEachClothParticleLanes(d, cloth, SOAK_LAMBDA(int i, Lanes lanes) {
     const Float4 xi4 = p.predicted[i];
@@ -75,12 +76,10 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
     const Vec3 x0 = p.position[i].xyz(), start = xi4.xyz();
     const float dist = 0.5f * c.thickness[vi];
     // The same side test as water (Eq. 21); the vertex takes the whole correction.
-    const auto correction = [&](const ClothTriangle& t, Vec3 x) {
+    const auto correction = [&](int k, Vec3 x) {
+      const ClothTriangle t = c.firstVertexTriangles[k];
       if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) return Vec3(0.f, 0.f, 0.f);
-      const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
-      return triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(), p.position[sc].xyz(),
-                                        p.predicted[sa].xyz(), p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist,
-                                        0.f);
+      return triangleCouplingCorrection(x0, x, c.triangleSnapshot[k], dist, 0.f);
     };
     // With several lanes, they first look for any triangle that would
     // correct the vertex where it is; if none would, neither would the
@@ -89,8 +88,8 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
     // most vertices stop here. One lane (the CPU) goes straight on.
     if (lanes.size > 1) {
       bool due = false;
-      forEachTriangleNearPath(g, p, c, x0, start, lanes, [&](const ClothTriangle& t, int) {
-        if (!due) due = !isZero(correction(t, start));
+      forEachTriangleNearPath(g, p, c, x0, start, lanes, [&](int k, int) {
+        if (!due) due = !isZero(correction(k, start));
       });
       const bool any = laneAny(lanes, due);
       if (!lanes.leader()) return;
@@ -100,9 +99,10 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
       }
     }
     Vec3 x = start;
-    forEachTriangleNearPath(g, p, c, x0, start, Lanes{}, [&](const ClothTriangle& t, int j) {
-      const Vec3 corr = correction(t, x);
+    forEachTriangleNearPath(g, p, c, x0, start, Lanes{}, [&](int k, int j) {
+      const Vec3 corr = correction(k, x);
       if (isZero(corr)) return;
+      const ClothTriangle t = c.firstVertexTriangles[k];
       // A triangle that shares a vertex with one of the vertex's own
       // triangles is its own surface, not another layer (checked only
       // here, where a correction is due).

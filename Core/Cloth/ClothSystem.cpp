@@ -12,7 +12,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridStart_(device), dGridEnd_(device), dGridKey_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridStart_(device), dGridEnd_(device), dGridKey_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -135,6 +135,7 @@ void ClothSystem::upload() {
   for (const auto& t : triangles_) firstList[next[t.v[0]]++] = t;
   dFirstTriStart_.upload(firstStart);
   dFirstTri_.upload(firstList);
+  dTriangleSnapshot_.resize(firstList.size());
   dRest_.upload(restPosition_);
   dAttach_.upload(attach_);
   dThickness_.upload(thickness_);
@@ -162,6 +163,7 @@ ClothView ClothSystem::view() {
   v.vertexTriangles = dTriList_.data();
   v.firstVertexTriangleStart = dFirstTriStart_.data();
   v.firstVertexTriangles = dFirstTri_.data();
+  v.triangleSnapshot = dTriangleSnapshot_.data();
   v.restPosition = dRest_.data();
   v.attachCollider = dAttach_.data();
   v.thickness = dThickness_.data();

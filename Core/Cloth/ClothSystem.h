@@ -27,6 +27,20 @@ struct ClothTriangle {
   int v[3];
 };
 
+// A cloth triangle as the triangle searches (vertex-triangle contact,
+// water-triangle coupling) read it: its vertices now and at the start of the
+// step, and both unit normals, in one place. Stored at the triangle's
+// position k in firstVertexTriangles and refreshed before each search
+// (Coupling/TriangleCoupling.h), so that a test reads 128 contiguous bytes
+// instead of three slots and six particle positions, and does not recompute
+// the normals for every particle that tests the triangle.
+struct TriangleSnapshot {
+  Float4 a, b, c;     // predicted vertices; a.w: |(b - a) x (c - a)| (twice the area)
+  Float4 a0, b0, c0;  // start-of-step vertices
+  Float4 n;           // unit normal now
+  Float4 n0;          // unit normal at the start (n where the triangle flipped)
+};
+
 // What the cloth stages see (raw device pointers, passed to kernels).
 struct ClothView {
   const ClothEdge* edges = nullptr;  // in colour order
@@ -44,6 +58,7 @@ struct ClothView {
   // triangle searches visit each triangle from its first vertex only.
   const int* firstVertexTriangleStart = nullptr;
   const ClothTriangle* firstVertexTriangles = nullptr;
+  TriangleSnapshot* triangleSnapshot = nullptr;  // per firstVertexTriangles entry (see TriangleSnapshot)
   const Vec3* restPosition = nullptr;  // per vertex, as created
   const int* attachCollider = nullptr; // per vertex: collider index it moves with, or -1
   const float* thickness = nullptr;    // per vertex: cloth thickness (contact distance), m
@@ -143,6 +158,7 @@ class ClothSystem {
   Buffer<ClothTriangle> dTriangles_;
   Buffer<int> dTriStart_, dTriList_, dAttach_, dSlot_, dFirstTriStart_;
   Buffer<ClothTriangle> dFirstTri_;
+  Buffer<TriangleSnapshot> dTriangleSnapshot_;
   Buffer<float> dThickness_, dTetherLength_;
   Buffer<int> dTetherPin_;
   Buffer<Vec3> dRest_;

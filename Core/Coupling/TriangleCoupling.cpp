@@ -4,9 +4,19 @@
 
 namespace soak {
 
+void snapshotTriangles(Device d, ParticleView p, ClothView c) {
+  forEach(d, c.triangleCount, SOAK_LAMBDA(int k) {
+    const ClothTriangle t = c.firstVertexTriangles[k];
+    const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
+    c.triangleSnapshot[k] = makeTriangleSnapshot(p.position[sa].xyz(), p.position[sb].xyz(), p.position[sc].xyz(),
+                                                 p.predicted[sa].xyz(), p.predicted[sb].xyz(), p.predicted[sc].xyz());
+  }, "cloth.triangleSnapshot");
+}
+
 void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
                             int passes) {
   if (c.triangleCount == 0) return;
+  snapshotTriangles(d, p, c);  // the passes move water only
   for (int pass = 0; pass < passes; ++pass) {
     forEachLanes(d, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
       if (!isWater(p.phase[i])) return;
@@ -15,11 +25,9 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
       // Every cell the path and the triangles around it can touch: a fast
       // particle (a falling block lands at 3 m/s, 4.5 cm a step, more than a
       // cell) can cross cloth that lies around where it started.
-      const auto correction = [&](const ClothTriangle& t, Vec3 x) {
-        const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
-        const float dist = 0.5f * c.thickness[t.v[0]];
-        return triangleCouplingCorrection(x0, x, p.position[sa].xyz(), p.position[sb].xyz(), p.position[sc].xyz(),
-                                          p.predicted[sa].xyz(), p.predicted[sb].xyz(), p.predicted[sc].xyz(), dist);
+      const auto correction = [&](int k, Vec3 x) {
+        const float dist = 0.5f * c.thickness[c.firstVertexTriangles[k].v[0]];
+        return triangleCouplingCorrection(x0, x, c.triangleSnapshot[k], dist);
       };
       // With several lanes, they first look for any triangle that corrects
       // the particle where it is; if none does, the sequential pass below
@@ -28,16 +36,17 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
       // CPU) goes straight on.
       if (lanes.size > 1) {
         bool due = false;
-        forEachTriangleNearPath(g, p, c, x0, start, lanes, [&](const ClothTriangle& t, int) {
-          if (!due) due = !isZero(correction(t, start));
+        forEachTriangleNearPath(g, p, c, x0, start, lanes, [&](int k, int) {
+          if (!due) due = !isZero(correction(k, start));
         });
         if (!laneAny(lanes, due) || !lanes.leader()) return;
       }
       Vec3 x = start;
       bool moved = false;
-      forEachTriangleNearPath(g, p, c, x0, start, Lanes{}, [&](const ClothTriangle& t, int) {
-        const Vec3 corr = correction(t, x);
+      forEachTriangleNearPath(g, p, c, x0, start, Lanes{}, [&](int k, int) {
+        const Vec3 corr = correction(k, x);
         if (isZero(corr)) return;
+        const ClothTriangle t = c.firstVertexTriangles[k];
         float kappa = 1.f;
         if (vertexStiffness)
           kappa = (vertexStiffness[t.v[0]] + vertexStiffness[t.v[1]] + vertexStiffness[t.v[2]]) / 3.f;

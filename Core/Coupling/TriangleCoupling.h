@@ -25,15 +25,33 @@ SOAK_INLINE bool insideTriangle(Vec3 q, Vec3 a, Vec3 b, Vec3 c, float margin) {
   return v >= tol && w >= tol && 1.f - v - w >= tol;
 }
 
-SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, Vec3 c0, Vec3 a, Vec3 b, Vec3 c,
-                                            float d, float depthMargin = 0.5f) {
-  const Vec3 zero(0.f, 0.f, 0.f);
+// The triangle's snapshot (ClothSystem.h) from its vertices at the start of
+// the step (a0, b0, c0) and now (a, b, c).
+SOAK_INLINE TriangleSnapshot makeTriangleSnapshot(Vec3 a0, Vec3 b0, Vec3 c0, Vec3 a, Vec3 b, Vec3 c) {
   Vec3 n = cross(b - a, c - a);
   const float area2 = length(n);
-  if (area2 < 1e-14f) return zero;
-  n = n / area2;
+  n = area2 >= 1e-14f ? n / area2 : Vec3(0.f, 0.f, 0.f);
   Vec3 n0 = normalizedOrZero(cross(b0 - a0, c0 - a0));
   if (dot(n0, n) <= 0.f) n0 = n;  // triangle flipped within a step: trust the new normal
+  TriangleSnapshot t;
+  t.a = Float4(a, area2);
+  t.b = Float4(b, 0.f);
+  t.c = Float4(c, 0.f);
+  t.a0 = Float4(a0, 0.f);
+  t.b0 = Float4(b0, 0.f);
+  t.c0 = Float4(c0, 0.f);
+  t.n = Float4(n, 0.f);
+  t.n0 = Float4(n0, 0.f);
+  return t;
+}
+
+SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, const TriangleSnapshot& tri, float d,
+                                            float depthMargin = 0.5f) {
+  const Vec3 zero(0.f, 0.f, 0.f);
+  const float area2 = tri.a.w;
+  if (area2 < 1e-14f) return zero;
+  const Vec3 a = tri.a.xyz(), b = tri.b.xyz(), c = tri.c.xyz(), a0 = tri.a0.xyz();
+  const Vec3 n = tri.n.xyz(), n0 = tri.n0.xyz();
   // The side the particle came from (the +/- of Eq. 21).
   const float s0 = dot(x0 - a0, n0);
   const float sigma = s0 >= 0.f ? 1.f : -1.f;
@@ -55,6 +73,7 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, V
     // triangle is grown by a margin that grows with the depth reached: the
     // path's crossing through a crease between two triangles may fall just
     // outside each.
+    const Vec3 b0 = tri.b0.xyz(), c0 = tri.c0.xyz();
     const float t = fabsf(s0) / (fabsf(s0) - s1);
     const Vec3 xt = x0 + (x - x0) * t;
     const Vec3 at = a0 + (a - a0) * t, bt = b0 + (b - b0) * t, ct = c0 + (c - c0) * t;
@@ -64,6 +83,11 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, V
   }
   if (!inside) return zero;
   return n * (sigma * -C);
+}
+
+SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, Vec3 c0, Vec3 a, Vec3 b, Vec3 c,
+                                            float d, float depthMargin = 0.5f) {
+  return triangleCouplingCorrection(x0, x, makeTriangleSnapshot(a0, b0, c0, a, b, c), d, depthMargin);
 }
 
 // Distance from a point of the path x0 -> x within which every vertex of a
@@ -95,9 +119,10 @@ SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, 
   });
 }
 
-// Calls f(t, j) once for every cloth triangle t that can matter to a point
-// moving from x0 to x (j: the slot of t's first vertex, from which it is
-// visited; all three vertices lie within reach).
+// Calls f(k, j) once for every cloth triangle that can matter to a point
+// moving from x0 to x: k is its place in c.firstVertexTriangles (and
+// c.triangleSnapshot), j the slot of its first vertex, from which it is
+// visited; all three vertices lie within reach.
 template <class F>
 SOAK_INLINE void forEachTriangleNearPath(const GridView& g, const ParticleView& p, const ClothView& c, Vec3 x0, Vec3 x,
                                          const Lanes& lanes, F&& f) {
@@ -105,9 +130,13 @@ SOAK_INLINE void forEachTriangleNearPath(const GridView& g, const ParticleView& 
   forEachClothNearPath(g, p, x0, x, reach, lanes, [&](int j) {
     const int v = p.id[j];
     const int end = c.firstVertexTriangleStart[v + 1];
-    for (int k = c.firstVertexTriangleStart[v]; k < end; ++k) f(c.firstVertexTriangles[k], j);
+    for (int k = c.firstVertexTriangleStart[v]; k < end; ++k) f(k, j);
   });
 }
+
+// Refreshes c.triangleSnapshot from the particles' start-of-step and
+// predicted positions; the searches below read it.
+void snapshotTriangles(Device d, ParticleView p, ClothView c);
 
 // One pass of Eq. 21 over all water particles against the triangles of the
 // cloth particles around them. `vertexStiffness` (per cloth vertex, may be

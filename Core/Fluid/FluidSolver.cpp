@@ -24,7 +24,7 @@ namespace soak {
 
 FluidSolver::FluidSolver(Device device)
     : device_(device), lambda_(device), density_(device), volume_(device), scratch_(device), delta_(device),
-      omega_(device), neighbours_(device) {}
+      omega_(device), attributes_(device), neighbours_(device) {}
 
 void FluidSolver::configure(const WaterSettings& water) {
   const float h = water.supportRadius, s = water.spacing;
@@ -56,6 +56,7 @@ void FluidSolver::resize(int n) {
   scratch_.resize(n);
   delta_.resize(n);
   omega_.resize(n);
+  attributes_.resize(n);
 }
 
 void FluidSolver::computeBoundaryVolumes(Simulation& sim) {
@@ -65,6 +66,10 @@ void FluidSolver::computeBoundaryVolumes(Simulation& sim) {
 }
 
 namespace {
+
+// FluidAttributes: per particle, Float4(h, mu = m / m0, psi (cloth: rho0 V /
+// m0, else 0), kind), kind one of:
+constexpr float kFluidOther = 0.f, kFluidWater = 1.f, kFluidCloth = 2.f;
 
 // Lanes per particle at least, for the passes over the neighbour lists: a
 // group reads a list's consecutive entries together, which paid even at 1M
@@ -80,9 +85,9 @@ struct CorrectionConstants {
 
 // dx of every water particle and of the cloth particles it touches, from the
 // multipliers `lam` (see the units comment above), then x* += dx.
-void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, const float* lam, const float* volume,
+void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, const float* lam, const Float4* attr,
                              Vec3* delta, CorrectionConstants k) {
-  const float rho0 = k.rho0, m0 = k.m0, corrK = k.corrK, corrQ = k.corrQ, moveScale = k.moveScale;
+  const float corrK = k.corrK, corrQ = k.corrQ, moveScale = k.moveScale, m0 = k.m0;
   const Collider* colliders = k.colliders;
   const int colliderCount = k.colliderCount;
   const WallDensityTable wall = *k.wall;
@@ -93,23 +98,24 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
     Vec3 dx(0.f, 0.f, 0.f);
     if (isWater(phi)) {
       const Vec3 xi = xi4.xyz();
-      const float hi = p.radius[i], mui = p.mass[i] / m0, li = lam[i];
+      const Float4 ai = attr[i];
+      const float hi = ai.x, mui = ai.y, li = lam[i];
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         if (j == i) return;
-        const int phj = p.phase[j];
+        const Float4 aj = attr[j];
         const Vec3 xij = xi - p.predicted[j].xyz();
         const float r2 = lengthSquared(xij);
-        const float h = pairSupport(hi, p.radius[j]);
+        const float h = pairSupport(hi, aj.x);
         if (r2 >= h * h) return;
         const Vec3 gr = spikyGradient(xij, sqrtf(r2), h);
-        const float muj = p.mass[j] / m0;
-        if (isWater(phj)) {
+        const float muj = aj.y;
+        if (aj.w == kFluidWater) {
           // Artificial pressure s_corr = -k (W(r) / W(dq))^4 against clumping.
           float ratio = poly6(r2, h) / poly6(corrQ * corrQ * h * h, h);
           float scorr = -corrK * ratio * ratio * ratio * ratio;
           dx += gr * (li * muj / mui + lam[j] + scorr * muj);
         } else {
-          dx += gr * (li * (rho0 * volume[j] / m0) / mui);
+          dx += gr * (li * aj.z / mui);
         }
       });
       dx = laneSum(lanes, dx);
@@ -122,12 +128,12 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
       dx = dx * moveScale;
     } else if (isCloth(phi) && xi4.w > 0.f) {
       const Vec3 xi = xi4.xyz();
-      const float hi = p.radius[i];
-      const float psi = rho0 * volume[i] / m0, mui = p.mass[i] / m0;
+      const Float4 ai = attr[i];
+      const float hi = ai.x, psi = ai.z, mui = ai.y;
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         const Vec3 xij = xi - p.predicted[j].xyz();
         const float r2 = lengthSquared(xij);
-        const float h = pairSupport(hi, p.radius[j]);
+        const float h = pairSupport(hi, attr[j].x);
         if (r2 >= h * h) return;
         dx += spikyGradient(xij, sqrtf(r2), h) * lam[j];
       });
@@ -162,6 +168,14 @@ void FluidSolver::solve(Simulation& sim) {
   float* rho = density_.data();
   const float* volume = volume_.data();
   Vec3* delta = delta_.data();
+  // What the passes read of a neighbour besides its position, in one load
+  // (FluidAttributes): fixed for the whole solve.
+  Float4* attr = attributes_.data();
+  forEach(device_, p.count, SOAK_LAMBDA(int i) {
+    const int ph = p.phase[i];
+    const float kind = isWater(ph) ? kFluidWater : isCloth(ph) ? kFluidCloth : kFluidOther;
+    attr[i] = Float4(p.radius[i], p.mass[i] / m0, isCloth(ph) ? rho0 * volume[i] / m0 : 0.f, kind);
+  }, "fluid.attributes");
   for (int it = 0; it < ws.iterations; ++it) {
     // Lambda of every water particle (Eq. 6-7 and the mass-weighted PBD step).
     forEachLanes(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
@@ -170,26 +184,27 @@ void FluidSolver::solve(Simulation& sim) {
         return;
       }
       const Vec3 xi = p.predicted[i].xyz();
-      const float hi = p.radius[i], mui = p.mass[i] / m0;
+      const Float4 ai = attr[i];
+      const float hi = ai.x, mui = ai.y;
       float dens = 0.f, sumG2 = 0.f;
       Vec3 gradSelf(0.f, 0.f, 0.f);
       forEachListedNeighbour(g, i, lanes, [&](int j) {
-        const int phj = p.phase[j];
+        const Float4 aj = attr[j];
         const Float4 xj = p.predicted[j];
         const Vec3 xij = xi - xj.xyz();
         const float r2 = lengthSquared(xij);
-        const float h = pairSupport(hi, p.radius[j]);
+        const float h = pairSupport(hi, aj.x);
         if (r2 >= h * h) return;
         const float r = sqrtf(r2);
-        const float muj = p.mass[j] / m0;
-        if (isWater(phj)) {
+        const float muj = aj.y;
+        if (aj.w == kFluidWater) {
           dens += muj * poly6(r2, h);
           if (j == i) return;
           Vec3 gr = spikyGradient(xij, r, h);
           gradSelf += gr * muj;
           sumG2 += muj * lengthSquared(gr);
         } else {
-          const float psi = rho0 * volume[j] / m0;
+          const float psi = aj.z;
           dens += psi * poly6(r2, h);
           Vec3 gr = spikyGradient(xij, r, h);
           gradSelf += gr * psi;
@@ -210,7 +225,7 @@ void FluidSolver::solve(Simulation& sim) {
       const float G = sumG2 + lengthSquared(gradSelf) / mui;
       lam[i] = G + eps > 0.f ? -C * rho0 * rho0 / (G + eps) : 0.f;  // a lone particle: nothing to solve
     }, "fluid.lambda", kListLanes);
-    applyDensityCorrections(device_, p, g, lam, volume, delta, k);
+    applyDensityCorrections(device_, p, g, lam, attr, delta, k);
     projectColliders(device_, p, sim.deviceColliders(), int(sim.colliders.size()), kCollisionRadiusScale,
                      float(sim.settings.timeStep));
   }

@@ -45,6 +45,7 @@ class FluidSolver {
   WallDensityTable wall_;
   Buffer<float> lambda_, density_, volume_, scratch_;
   Buffer<Vec3> delta_, omega_;
+  Buffer<Float4> attributes_;  // per particle during solve(): h, m / m0, boundary psi, kind (FluidSolver.cpp)
   FluidNeighbours neighbours_;
 };
 

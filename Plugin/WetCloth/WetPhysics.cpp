@@ -121,17 +121,20 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     scale[i] = demand > cap ? cap / factors : kA * cap;
   }, "wet.absorb.demand");
   // Water: if the cloth around wants more than the particle has, every share shrinks alike.
-  forEach(d, p.count, SOAK_LAMBDA(int j) {
-    ratio[j] = 0.f;
-    if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
+  forEachLanes(d, p.count, SOAK_LAMBDA(int j, Lanes lanes) {
+    if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) {
+      if (lanes.leader()) ratio[j] = 0.f;
+      return;
+    }
     const Vec3 xj = p.predicted[j].xyz();
     const float hj = p.radius[j];
     float asked = 0.f;
-    forEachCandidate(a.clothGrid, g.slotKey[j], [&](int i) {
+    forEachCandidate(a.clothGrid, g.slotKey[j], lanes, [&](int i) {
       if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
       asked += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd);
     });
-    ratio[j] = asked > p.mass[j] ? p.mass[j] / asked : 1.f;
+    asked = laneSum(lanes, asked);
+    if (lanes.leader()) ratio[j] = asked > p.mass[j] ? p.mass[j] / asked : 1.f;
   }, "wet.absorb.ratio");
   forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
     if (scale[i] <= 0.f) return;
@@ -145,16 +148,17 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     gained = laneSum(lanes, gained);
     if (lanes.leader()) a.held[i] += gained;
   }, "wet.absorb.cloth");
-  forEach(d, p.count, SOAK_LAMBDA(int j) {
+  forEachLanes(d, p.count, SOAK_LAMBDA(int j, Lanes lanes) {
     if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
     const Vec3 xj = p.predicted[j].xyz();
     const float hj = p.radius[j];
     float given = 0.f;
-    forEachCandidate(a.clothGrid, g.slotKey[j], [&](int i) {
+    forEachCandidate(a.clothGrid, g.slotKey[j], lanes, [&](int i) {
       if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
       given += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd) * ratio[j];
     });
-    if (given <= 0.f) return;
+    given = laneSum(lanes, given);
+    if (!lanes.leader() || given <= 0.f) return;
     const float m = ratio[j] < 1.f ? 0.f : fmaxf(p.mass[j] - given, 0.f);
     p.mass[j] = m;
     if (m > 0.f) {
@@ -328,12 +332,12 @@ void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
                   float dt) {
   const float kE = w.kappaE, etaE = w.etaE, rho0 = w.clothRestDensity, light = 0.999f * ref.mass;
   const float* S = a.saturation;
-  forEach(d, p.count, SOAK_LAMBDA(int j) {
+  forEachLanes(d, p.count, SOAK_LAMBDA(int j, Lanes lanes) {
     if (!isWater(p.phase[j]) || !(p.mass[j] > 0.f) || p.mass[j] >= light) return;
     const Vec3 xj = p.predicted[j].xyz();
     const float hj = p.radius[j];
     Vec3 f(0.f, 0.f, 0.f);
-    forEachCandidate(a.clothGrid, g.slotKey[j], [&](int i) {
+    forEachCandidate(a.clothGrid, g.slotKey[j], lanes, [&](int i) {
       if (!isCloth(p.phase[i])) return;
       const Vec3 xij = p.predicted[i].xyz() - xj;
       const float r2 = lengthSquared(xij);
@@ -347,6 +351,8 @@ void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
     // As a position change dt^2 f / m, at most a quarter of the particle's
     // support per step: a light remnant of partial absorption would
     // otherwise be flung by a force meant for a drip.
+    f = laneSum(lanes, f);
+    if (!lanes.leader()) return;
     Vec3 dx = f * (dt * dt / p.mass[j]);
     const float most = 0.25f * hj, len = length(dx);
     if (len > most) dx = dx * (most / len);
