@@ -61,22 +61,4 @@ SOAK_INLINE bool laneAny(const Lanes& l, bool b) {
 #endif
 }
 
-// Bit k set where lane k of the group passes true.
-SOAK_INLINE unsigned laneBallot(const Lanes& l, bool b) {
-#if defined(__CUDA_ARCH__)
-  return (__ballot_sync(l.mask, b) & l.mask) >> (__ffs(l.mask) - 1);
-#else
-  (void)l;
-  return b ? 1u : 0u;
-#endif
-}
-
-SOAK_INLINE int bitCount(unsigned v) {
-#if defined(__CUDA_ARCH__)
-  return __popc(v);
-#else
-  return __builtin_popcount(v);
-#endif
-}
-
 }  // namespace soak

@@ -9,9 +9,6 @@ ListSums laneListSums(Device d, const std::vector<int>& start, const std::vector
   const int n = int(start.size()) - 1;
   Buffer<int> startBuffer(d), countBuffer(d, std::size_t(n)), anyBuffer(d, std::size_t(n));
   Buffer<float> valueBuffer(d), sumBuffer(d, std::size_t(n));
-  Buffer<int> aboveBuffer(d);
-  aboveBuffer.upload(std::vector<int>(values.size(), -1));
-  int* aboveList = aboveBuffer.data();
   startBuffer.upload(start);
   valueBuffer.upload(values);
   const int* s = startBuffer.data();
@@ -21,16 +18,10 @@ ListSums laneListSums(Device d, const std::vector<int>& start, const std::vector
   int* any = anyBuffer.data();
   forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes lanes) {
     float total = 0.f;
-    int above = 0, written = s[i];
-    const unsigned below = (1u << lanes.index) - 1u;
-    for (int round = s[i]; round < s[i + 1]; round += lanes.size) {
-      const int k = round + lanes.index;
-      const bool take = k < s[i + 1] && v[k] > threshold;
-      if (k < s[i + 1]) total += v[k];
-      above += take ? 1 : 0;
-      const unsigned taken = laneBallot(lanes, take);
-      if (take) aboveList[written + bitCount(taken & below)] = k;
-      written += bitCount(taken);
+    int above = 0;
+    for (int k = s[i] + lanes.index; k < s[i + 1]; k += lanes.size) {
+      total += v[k];
+      above += v[k] > threshold ? 1 : 0;
     }
     total = laneSum(lanes, total);
     above = laneSum(lanes, above);
@@ -40,7 +31,7 @@ ListSums laneListSums(Device d, const std::vector<int>& start, const std::vector
     count[i] = above;
     any[i] = found ? 1 : 0;
   }, "test.laneListSums");
-  return {sumBuffer.download(), countBuffer.download(), anyBuffer.download(), aboveBuffer.download()};
+  return {sumBuffer.download(), countBuffer.download(), anyBuffer.download()};
 }
 
 }  // namespace soak::test

@@ -11,9 +11,6 @@ struct ListSums {
   std::vector<float> sum;   // per item: sum of its entries' values
   std::vector<int> count;   // per item: entries above the threshold
   std::vector<int> any;     // per item: 1 if any entry is above the threshold
-  // Per entry: the item's entries above the threshold, in order, from its
-  // start (ranked across lanes with laneBallot); the rest -1.
-  std::vector<int> above;
 };
 
 // Item i's entries are values[start[i] .. start[i + 1]).
