@@ -29,16 +29,9 @@ struct Lanes {
   SOAK_INLINE bool leader() const { return index == 0; }
 };
 
-SOAK_INLINE float laneSum(const Lanes& l, float v) {
-#if defined(__CUDA_ARCH__)
-  for (int o = l.size / 2; o > 0; o /= 2) v += __shfl_xor_sync(l.mask, v, o, l.size);
-#else
-  (void)l;
-#endif
-  return v;
-}
-
-SOAK_INLINE int laneSum(const Lanes& l, int v) {
+// Sum over the group of a float or an int.
+template <class T>
+SOAK_INLINE T laneSum(const Lanes& l, T v) {
 #if defined(__CUDA_ARCH__)
   for (int o = l.size / 2; o > 0; o /= 2) v += __shfl_xor_sync(l.mask, v, o, l.size);
 #else
