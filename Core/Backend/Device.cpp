@@ -8,7 +8,6 @@
 #include <unordered_map>
 
 #include "Backend/CudaBackend.h"
-#include "Backend/ForEachPhased.h"
 #include "Base/Error.h"
 
 namespace soak {
@@ -103,11 +102,6 @@ void fillBytes(Device d, void* dst, int value, std::size_t bytes) {
 }
 void checkLastLaunch(Device d, const char* what) {
   if (d == Device::Cuda) cuda::checkLaunch(what);
-}
-
-PhasedLaunchPolicy& phasedLaunchPolicy() {
-  static PhasedLaunchPolicy policy;
-  return policy;
 }
 
 }  // namespace soak

@@ -35,31 +35,31 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
   // through the particle slots, and neighbouring vertices share cache lines.
   Float4* x = c.vertexScratch;
   forEach(d, vertices, SOAK_LAMBDA(int v) { x[v] = p.predicted[c.vertexSlot[v]]; }, "cloth.constraints.gather");
-  forEachPhased(d, phases, x, vertices, SOAK_LAMBDA(int k, const PhasedState& s) {
+  forEachPhased(d, phases, SOAK_LAMBDA(int k) {
     if (k < edgeBase) {
       // Tethers: unilateral, only the free vertex moves (its pins do not).
       const int v = k;
-      const Float4 xv = s.load(v);
+      const Float4 xv = x[v];
       if (xv.w == 0.f) return;
       Vec3 q = xv.xyz();
       for (int t = 0; t < kTethers; ++t) {
         const int pin = c.tetherPin[v * kTethers + t];
         if (pin < 0) break;
-        const Vec3 anchor = s.load(pin).xyz();
+        const Vec3 anchor = x[pin].xyz();
         const Vec3 dd = q - anchor;
         const float len = length(dd), maxLen = c.tetherLength[v * kTethers + t];
         if (len > maxLen) q = anchor + dd * (maxLen / len);
       }
-      s.store(v, Float4(q, xv.w));
+      x[v] = Float4(q, xv.w);
     } else if (k < bendBase) {
       // Stretch (Eq. 8).
       const int e = k - edgeBase;
       const ClothEdge edge = c.edges[e];
-      const Float4 xa = s.load(edge.a), xb = s.load(edge.b);
+      const Float4 xa = x[edge.a], xb = x[edge.b];
       Vec3 da, db;
       projectStretch(xa.xyz(), xa.w, xb.xyz(), xb.w, c.edgeRest[e], c.edgeStiffness[e], dt, c.edgeLambda[e], da, db);
-      s.store(edge.a, Float4(xa.xyz() + da, xa.w));
-      s.store(edge.b, Float4(xb.xyz() + db, xb.w));
+      x[edge.a] = Float4(xa.xyz() + da, xa.w);
+      x[edge.b] = Float4(xb.xyz() + db, xb.w);
     } else {
       // Bending (Eq. 9).
       const int b = k - bendBase;
@@ -67,12 +67,12 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
       Vec3 q[4], dx[4];
       float w[4];
       for (int a = 0; a < 4; ++a) {
-        const Float4 xa = s.load(bend.v[a]);
+        const Float4 xa = x[bend.v[a]];
         q[a] = xa.xyz();
         w[a] = xa.w;
       }
       projectBend(q, w, c.bendRest[b], c.bendStiffness[b], dt, c.bendLambda[b], dx);
-      for (int a = 0; a < 4; ++a) s.store(bend.v[a], Float4(q[a] + dx[a], w[a]));
+      for (int a = 0; a < 4; ++a) x[bend.v[a]] = Float4(q[a] + dx[a], w[a]);
     }
   }, "cloth.constraints");
   forEach(d, vertices, SOAK_LAMBDA(int v) { p.predicted[c.vertexSlot[v]] = x[v]; }, "cloth.constraints.scatter");

@@ -25,7 +25,6 @@
 #include <string>
 #include <vector>
 
-#include "Backend/ForEachPhased.h"
 #include "Base/Error.h"
 #include "Simulation/LoadedScene.h"
 
@@ -269,27 +268,11 @@ std::vector<std::string> splitList(const std::string& s) {
   return out;
 }
 
-// The GPU kernel of the coloured cloth solve (Backend/ForEachPhased.h):
-// auto (a thread-block cluster where the cloth fits, else the cooperative
-// grid), grid (always the cooperative grid), or a cluster of BLOCKS blocks of
-// THREADS threads (e.g. 16x1024), for measuring one against the other.
-void setClothKernel(const std::string& v) {
-  PhasedLaunchPolicy& policy = phasedLaunchPolicy();
-  int blocks = 0, threads = 0;
-  char tail = 0;
-  if (v == "auto") policy.clusterBlocks = -1, policy.clusterThreads = 0;
-  else if (v == "grid") policy.clusterBlocks = 0;
-  else if (std::sscanf(v.c_str(), "%dx%d%c", &blocks, &threads, &tail) == 2 && blocks > 0 && threads > 0)
-    policy.clusterBlocks = blocks, policy.clusterThreads = threads;
-  else throw InputError("soak-bench: --cloth-kernel takes auto, grid or BLOCKSxTHREADS (e.g. 16x1024), not '" + v + "'");
-}
-
 int usage() {
   std::fprintf(stderr,
                "usage: soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]\n"
                "                  [--scale-sheet paper|dense]\n"
                "                  [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]\n"
-               "                  [--cloth-kernel auto|grid|BLOCKSxTHREADS]\n"
                "                  [--set Element.attr=value ...]\n");
   return 2;
 }
@@ -323,7 +306,6 @@ int main(int argc, char** argv) {
       else if (a == "--json") json = next();
       else if (a == "--no-table2") table2 = false;
       else if (a == "--set") overrides.push_back(next());
-      else if (a == "--cloth-kernel") setClothKernel(next());
       else if (a == "--help" || a == "-h") return usage(), 0;
       else return std::fprintf(stderr, "soak-bench: unknown argument '%s'\n", a.c_str()), usage();
     } catch (const std::exception& e) {
@@ -353,13 +335,6 @@ int main(int argc, char** argv) {
       const Result& r = results.back();
       std::fprintf(stderr, "soak-bench: %s: %d water + %d cloth, %.3f ms per step (wetting %.3f ms)\n",
                    c.name.c_str(), r.water, r.cloth, r.totalMs, r.wettingMs);
-      if (device == Device::Cuda && r.cloth > 0) {
-        const PhasedLaunchPolicy& used = phasedLaunchPolicy();
-        if (used.lastClusterBlocks > 0)
-          std::fprintf(stderr, "soak-bench: %s: cloth constraints in a cluster of %d blocks x %d threads\n",
-                       c.name.c_str(), used.lastClusterBlocks, used.lastClusterThreads);
-        else std::fprintf(stderr, "soak-bench: %s: cloth constraints in the cooperative grid kernel\n", c.name.c_str());
-      }
     }
     printTable(results, deviceText, steps);
     if (!json.empty()) writeJson(json, results, deviceText, steps);
