@@ -10,7 +10,7 @@ namespace soak {
 // Stiffness of one constraint. compliance < 0 selects PBD with the
 // per-iteration factor kPrime = 1 - (1 - k)^(1/n_s) (Eq. 5); compliance >= 0
 // selects XPBD with alpha = compliance (m/N for stretch, 1/(N m) for bend).
-struct ConstraintStiffness {
+struct alignas(8) ConstraintStiffness {
   float kPrime = 1.f;
   float compliance = -1.f;
 };

@@ -2,6 +2,7 @@
 
 #include "Backend/ForEach.h"
 #include "Backend/ForEachPhased.h"
+#include "Base/ReadOnly.h"
 #include "Physics/Collider.h"
 
 namespace soak {
@@ -24,7 +25,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
   const int bendBase = edgeBase + (stretchColours.empty() ? 0 : stretchColours.back());
   PhaseList phases;
   phases.repeat = iterations;
-  bool fits = phases.add(0, vertices);
+  bool fits = !c.anyTethers || phases.add(0, vertices);  // no phase where no vertex has a tether
   for (std::size_t col = 0; col + 1 < stretchColours.size(); ++col)
     fits = fits && phases.add(edgeBase + stretchColours[col], edgeBase + stretchColours[col + 1]);
   for (std::size_t col = 0; col + 1 < bendColours.size(); ++col)
@@ -38,32 +39,38 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
   forEachPhased(d, phases, SOAK_LAMBDA(int k) {
     if (k < edgeBase) {
       // Tethers: unilateral, only the free vertex moves (its pins do not).
+      // The pins, their lengths and positions are loaded before the
+      // sequential projections, so the loads overlap.
       const int v = k;
+      const TetherPins pins = loadReadOnly(reinterpret_cast<const TetherPins*>(c.tetherPin) + v);
       const Float4 xv = x[v];
-      if (xv.w == 0.f) return;
+      if (xv.w == 0.f || pins.pin[0] < 0) return;
+      const TetherLengths lengths = loadReadOnly(reinterpret_cast<const TetherLengths*>(c.tetherLength) + v);
+      Vec3 anchor[kTethers];
+      for (int t = 0; t < kTethers; ++t)
+        if (pins.pin[t] >= 0) anchor[t] = x[pins.pin[t]].xyz();
       Vec3 q = xv.xyz();
       for (int t = 0; t < kTethers; ++t) {
-        const int pin = c.tetherPin[v * kTethers + t];
-        if (pin < 0) break;
-        const Vec3 anchor = x[pin].xyz();
-        const Vec3 dd = q - anchor;
-        const float len = length(dd), maxLen = c.tetherLength[v * kTethers + t];
-        if (len > maxLen) q = anchor + dd * (maxLen / len);
+        if (pins.pin[t] < 0) break;
+        const Vec3 dd = q - anchor[t];
+        const float len = length(dd), maxLen = lengths.length[t];
+        if (len > maxLen) q = anchor[t] + dd * (maxLen / len);
       }
       x[v] = Float4(q, xv.w);
     } else if (k < bendBase) {
       // Stretch (Eq. 8).
       const int e = k - edgeBase;
-      const ClothEdge edge = c.edges[e];
+      const ClothEdge edge = loadReadOnly(c.edges + e);
       const Float4 xa = x[edge.a], xb = x[edge.b];
       Vec3 da, db;
-      projectStretch(xa.xyz(), xa.w, xb.xyz(), xb.w, c.edgeRest[e], c.edgeStiffness[e], dt, c.edgeLambda[e], da, db);
+      projectStretch(xa.xyz(), xa.w, xb.xyz(), xb.w, loadReadOnly(c.edgeRest + e), loadReadOnly(c.edgeStiffness + e), dt,
+                     c.edgeLambda[e], da, db);
       x[edge.a] = Float4(xa.xyz() + da, xa.w);
       x[edge.b] = Float4(xb.xyz() + db, xb.w);
     } else {
       // Bending (Eq. 9).
       const int b = k - bendBase;
-      const ClothBend bend = c.bends[b];
+      const ClothBend bend = loadReadOnly(c.bends + b);
       Vec3 q[4], dx[4];
       float w[4];
       for (int a = 0; a < 4; ++a) {
@@ -71,7 +78,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
         q[a] = xa.xyz();
         w[a] = xa.w;
       }
-      projectBend(q, w, c.bendRest[b], c.bendStiffness[b], dt, c.bendLambda[b], dx);
+      projectBend(q, w, loadReadOnly(c.bendRest + b), loadReadOnly(c.bendStiffness + b), dt, c.bendLambda[b], dx);
       for (int a = 0; a < 4; ++a) x[bend.v[a]] = Float4(q[a] + dx[a], w[a]);
     }
   }, "cloth.constraints");

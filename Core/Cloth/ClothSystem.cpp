@@ -140,6 +140,7 @@ void ClothSystem::upload() {
   dAttach_.upload(attach_);
   dThickness_.upload(thickness_);
   dTetherPin_.upload(tetherPin_);
+  anyTethers_ = std::any_of(tetherPin_.begin(), tetherPin_.end(), [](int pin) { return pin >= 0; });
   dTetherLength_.upload(tetherLength_);
   dSlot_.resize(nv);
   dVertexScratch_.resize(nv);
@@ -170,6 +171,7 @@ ClothView ClothSystem::view() {
   v.maxEdgeLength = maxEdgeLength_;
   v.maxThickness = maxThickness_;
   v.tetherPin = dTetherPin_.data();
+  v.anyTethers = anyTethers_;
   v.tetherLength = dTetherLength_.data();
   v.vertexSlot = dSlot_.data();
   v.vertexScratch = dVertexScratch_.data();

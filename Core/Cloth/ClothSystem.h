@@ -17,12 +17,21 @@ namespace soak {
 
 constexpr int kTethers = 4;
 
-struct ClothEdge {
+struct alignas(8) ClothEdge {
   int a, b;
 };
-struct ClothBend {
+struct alignas(16) ClothBend {
   int v[4];
 };
+// One vertex's tethers as one 16-byte load (ClothView::tetherPin and
+// tetherLength hold kTethers entries per vertex).
+struct alignas(16) TetherPins {
+  int pin[kTethers];
+};
+struct alignas(16) TetherLengths {
+  float length[kTethers];
+};
+static_assert(sizeof(TetherPins) == kTethers * sizeof(int), "kTethers ints per vertex");
 struct ClothTriangle {
   int v[3];
 };
@@ -69,6 +78,7 @@ struct ClothView {
   // within tetherLength of pinned vertex tetherPin (kTethers per vertex, -1: none).
   const int* tetherPin = nullptr;
   const float* tetherLength = nullptr;
+  bool anyTethers = false;  // some vertex has a tether
   int vertexCount = 0, edgeCount = 0, bendCount = 0, triangleCount = 0;
   float maxEdgeLength = 0.f;  // longest rest edge of any cloth (bounds a triangle's reach from its vertices)
   float maxThickness = 0.f;   // largest thickness of any cloth
@@ -136,6 +146,7 @@ class ClothSystem {
   std::vector<ClothObject> objects_;
   // Host staging, in creation order until upload() colours them.
   std::vector<ClothEdge> edges_;
+  bool anyTethers_ = false;
   std::vector<float> edgeRest_;
   std::vector<ConstraintStiffness> edgeStiffness_;
   std::vector<ClothBend> bends_;
