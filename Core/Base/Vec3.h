@@ -5,6 +5,25 @@
 
 namespace soak {
 
+// fmaxf and fminf, but inline on the CPU too: GCC calls libm for them (the
+// IEEE rules for NaN and signed zero keep it from using maxss), and the
+// neighbour count spent 12 % of its CPU time in those calls. Same results as
+// fmaxf/fminf, NaN included: a NaN argument gives the other one.
+SOAK_INLINE float maxf(float a, float b) {
+#if defined(__CUDA_ARCH__)
+  return fmaxf(a, b);
+#else
+  return (a > b || b != b) ? a : b;
+#endif
+}
+SOAK_INLINE float minf(float a, float b) {
+#if defined(__CUDA_ARCH__)
+  return fminf(a, b);
+#else
+  return (a < b || b != b) ? a : b;
+#endif
+}
+
 // Plain float vector usable on host and device.
 struct Vec3 {
   float x = 0.f, y = 0.f, z = 0.f;
@@ -36,8 +55,8 @@ SOAK_INLINE Vec3 cross(Vec3 a, Vec3 b) {
 }
 SOAK_INLINE float lengthSquared(Vec3 a) { return dot(a, a); }
 SOAK_INLINE float length(Vec3 a) { return sqrtf(dot(a, a)); }
-SOAK_INLINE Vec3 minVec(Vec3 a, Vec3 b) { return Vec3(fminf(a.x, b.x), fminf(a.y, b.y), fminf(a.z, b.z)); }
-SOAK_INLINE Vec3 maxVec(Vec3 a, Vec3 b) { return Vec3(fmaxf(a.x, b.x), fmaxf(a.y, b.y), fmaxf(a.z, b.z)); }
+SOAK_INLINE Vec3 minVec(Vec3 a, Vec3 b) { return Vec3(minf(a.x, b.x), minf(a.y, b.y), minf(a.z, b.z)); }
+SOAK_INLINE Vec3 maxVec(Vec3 a, Vec3 b) { return Vec3(maxf(a.x, b.x), maxf(a.y, b.y), maxf(a.z, b.z)); }
 SOAK_INLINE bool isFinite(float v) {
 #if defined(__CUDA_ARCH__)
   return isfinite(v);

@@ -17,7 +17,7 @@ struct alignas(8) ConstraintStiffness {
 
 // Eq. 5: the stiffness applied in each of n_s iterations.
 SOAK_INLINE float perIterationStiffness(float k, int iterations) {
-  return 1.f - powf(1.f - fminf(fmaxf(k, 0.f), 1.f), 1.f / float(iterations > 0 ? iterations : 1));
+  return 1.f - powf(1.f - minf(maxf(k, 0.f), 1.f), 1.f / float(iterations > 0 ? iterations : 1));
 }
 
 // The multiplier s such that dx_i = s * w_i * grad_i C. `lambda` is the
@@ -61,9 +61,9 @@ SOAK_INLINE void projectBend(const Vec3 x[4], const float w[4], float phi0, Cons
   float l23 = length(c23), l24 = length(c24);
   if (l23 < 1e-12f || l24 < 1e-12f) return;
   Vec3 n1 = c23 / l23, n2 = c24 / l24;
-  float d = fminf(1.f, fmaxf(-1.f, dot(n1, n2)));
+  float d = minf(1.f, maxf(-1.f, dot(n1, n2)));
   float C = acosf(d) - phi0;
-  float sinAngle = sqrtf(fmaxf(1.f - d * d, 0.f));
+  float sinAngle = sqrtf(maxf(1.f - d * d, 0.f));
   if (sinAngle < 1e-6f) return;  // flat or folded flat: gradient undefined
   Vec3 q[4];
   q[2] = (cross(p2, n2) + cross(n1, p2) * d) / l23;

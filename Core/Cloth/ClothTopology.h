@@ -42,7 +42,7 @@ SOAK_INLINE float dihedralAngle(Vec3 x1, Vec3 x2, Vec3 x3, Vec3 x4) {
   Vec3 e = x2 - x1;
   Vec3 n1 = normalizedOrZero(cross(e, x3 - x1));
   Vec3 n2 = normalizedOrZero(cross(e, x4 - x1));
-  float c = fminf(1.f, fmaxf(-1.f, dot(n1, n2)));
+  float c = minf(1.f, maxf(-1.f, dot(n1, n2)));
   return acosf(c);
 }
 

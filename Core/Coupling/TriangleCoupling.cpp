@@ -51,7 +51,7 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
         if (vertexStiffness)
           kappa = (vertexStiffness[t.v[0]] + vertexStiffness[t.v[1]] + vertexStiffness[t.v[2]]) / 3.f;
         // Eq. 5: the per-pass share of a constraint of stiffness kappa.
-        const float share = 1.f - powf(1.f - fminf(fmaxf(kappa, 0.f), 1.f), 1.f / float(passes));
+        const float share = 1.f - powf(1.f - minf(maxf(kappa, 0.f), 1.f), 1.f / float(passes));
         x += corr * share;
         moved = true;
       });

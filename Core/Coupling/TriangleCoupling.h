@@ -105,15 +105,15 @@ template <class F>
 SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, Vec3 x0, Vec3 x, float reach,
                                       const Lanes& lanes, F&& f) {
   const float r = reach + 0.25f / g.invCellSize;
-  const Vec3 lo(fminf(x0.x, x.x) - r, fminf(x0.y, x.y) - r, fminf(x0.z, x.z) - r);
-  const Vec3 hi(fmaxf(x0.x, x.x) + r, fmaxf(x0.y, x.y) + r, fmaxf(x0.z, x.z) + r);
+  const Vec3 lo(minf(x0.x, x.x) - r, minf(x0.y, x.y) - r, minf(x0.z, x.z) - r);
+  const Vec3 hi(maxf(x0.x, x.x) + r, maxf(x0.y, x.y) + r, maxf(x0.z, x.z) + r);
   const Vec3 path = x - x0;
   const float len2 = lengthSquared(path);
   forEachCandidateInBox(g, lo, hi, lanes, [&](int j) {
     if (!isCloth(p.phase[j])) return;
     // Within reach of the path (point-segment distance).
     const Vec3 y = p.predicted[j].xyz();
-    const float t = len2 > 0.f ? fminf(fmaxf(dot(y - x0, path) / len2, 0.f), 1.f) : 0.f;
+    const float t = len2 > 0.f ? minf(maxf(dot(y - x0, path) / len2, 0.f), 1.f) : 0.f;
     if (lengthSquared(y - (x0 + path * t)) > reach * reach) return;
     f(j);
   });

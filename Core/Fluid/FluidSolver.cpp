@@ -221,7 +221,7 @@ void FluidSolver::solve(Simulation& sim) {
         gradSelf += wallGradient * (1.f / m0);
       }
       rho[i] = dens * m0;
-      const float C = fmaxf(rho[i] / rho0 - 1.f, 0.f);  // unilateral: compression only
+      const float C = maxf(rho[i] / rho0 - 1.f, 0.f);  // unilateral: compression only
       const float G = sumG2 + lengthSquared(gradSelf) / mui;
       lam[i] = G + eps > 0.f ? -C * rho0 * rho0 / (G + eps) : 0.f;  // a lone particle: nothing to solve
     }, "fluid.lambda", kListLanes);
@@ -275,7 +275,7 @@ void FluidSolver::applyViscosity(Simulation& sim) {
     }
     Vec3 visc(0.f, 0.f, 0.f), w(0.f, 0.f, 0.f);
     forEachWaterNeighbour(g, p, i, lanes, [&](int j, Vec3 xij, float r2, float h) {
-      const float vol = p.mass[j] / fmaxf(rho[j], 0.5f * rho0);
+      const float vol = p.mass[j] / maxf(rho[j], 0.5f * rho0);
       const Vec3 vij = p.velocity[j] - vi;
       visc += vij * (vol * poly6(r2, h));
       w += cross(vij, spikyGradient(xij, sqrtf(r2), h)) * (-vol);  // curl v (Macklin & Mueller, Eq. 15)
@@ -292,7 +292,7 @@ void FluidSolver::applyViscosity(Simulation& sim) {
       if (!isWater(p.phase[i])) return;
       Vec3 eta(0.f, 0.f, 0.f);
       forEachWaterNeighbour(g, p, i, lanes, [&](int j, Vec3 xij, float r2, float h) {
-        const float vol = p.mass[j] / fmaxf(rho[j], 0.5f * rho0);
+        const float vol = p.mass[j] / maxf(rho[j], 0.5f * rho0);
         eta += spikyGradient(xij, sqrtf(r2), h) * (vol * omegaNorm[j]);
       });
       eta = laneSum(lanes, eta);
@@ -336,9 +336,9 @@ void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
       Vec3 wallGradient;
       dens += collidersDensity(wall, colliders, colliderCount, xi, wallGradient);
     }
-    err[i] = fmaxf(dens / rho0 - 1.f, 0.f);
+    err[i] = maxf(dens / rho0 - 1.f, 0.f);
   }, "fluid.error");
-  max = fmaxf(reduceMax(device_, err, p.count), 0.f);
+  max = maxf(reduceMax(device_, err, p.count), 0.f);
   const double sum = reduceSum(device_, err, p.count);
   const double water = reduceSum(device_, isWaterFlag, p.count);
   mean = water > 0.0 ? sum / water : 0.0;

@@ -29,7 +29,7 @@ SOAK_INLINE float wallDensityAt(const WallDensityTable& t, float d, float& slope
     slope = 0.f;
     return 0.f;
   }
-  float u = fmaxf(d, 0.f) / t.step;
+  float u = maxf(d, 0.f) / t.step;
   int i = int(u);
   if (i >= WallDensityTable::kSamples - 1) i = WallDensityTable::kSamples - 2;
   const float a = u - float(i);

@@ -46,7 +46,7 @@ constexpr std::uint32_t kCellWrap = 1024u;
 SOAK_INLINE int cellCoordinate(float x, float invCellSize) {
   float c = floorf(x * invCellSize);
   // Clamp before converting so far-away points stay defined behaviour.
-  c = fminf(fmaxf(c, -1.0e9f), 1.0e9f);
+  c = minf(maxf(c, -1.0e9f), 1.0e9f);
   return static_cast<int>(c);
 }
 
@@ -78,12 +78,24 @@ SOAK_INLINE std::uint32_t bucketOfKey(std::uint32_t key, std::uint32_t bucketMas
 // Calls f(j) for the slots j of the cell with key `key` that are this
 // lane's: of the cell's bucket's entries, every lanes.size-th from
 // lanes.index (all of them, in order, for one lane).
+// (forEachInBucket: the same where the caller knows the key's bucket.)
 template <class F>
-SOAK_INLINE void forEachInCell(const GridView& g, std::uint32_t key, const Lanes& lanes, F&& f) {
-  const std::uint32_t b = bucketOfKey(key, g.bucketMask);
+SOAK_INLINE void forEachInBucket(const GridView& g, std::uint32_t key, std::uint32_t b, const Lanes& lanes, F&& f) {
   const std::uint32_t e = g.end[b];
   for (std::uint32_t j = g.start[b] + std::uint32_t(lanes.index); j < e; j += std::uint32_t(lanes.size))
     if (g.cellKey[j] == key) f(slotOfEntry(g, j));
+}
+
+template <class F>
+SOAK_INLINE void forEachInCell(const GridView& g, std::uint32_t key, const Lanes& lanes, F&& f) {
+  forEachInBucket(g, key, bucketOfKey(key, g.bucketMask), lanes, f);
+}
+
+// The Morton code of cell (x, y, z) is spread(x) | spread(y) << 1 |
+// spread(z) << 2 (bucketOfKey); a query over a block of cells spreads each
+// axis' coordinates once instead of three per cell.
+SOAK_INLINE std::uint32_t spreadAxis(int coordinate, int axis) {
+  return spreadBits3(static_cast<std::uint32_t>(coordinate)) << axis;
 }
 
 // Calls f(j) once for every slot j whose cell is one of the 27 cells around
@@ -91,12 +103,16 @@ SOAK_INLINE void forEachInCell(const GridView& g, std::uint32_t key, const Lanes
 // The caller applies its own distance test.
 template <class F>
 SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, const Lanes& lanes, F&& f) {
-  const std::uint32_t cx = centerKey & 1023u, cy = (centerKey >> 10) & 1023u, cz = (centerKey >> 20) & 1023u;
+  const int c[3] = {int(centerKey & 1023u), int((centerKey >> 10) & 1023u), int((centerKey >> 20) & 1023u)};
+  std::uint32_t spread[3][3];
+  for (int k = 0; k < 3; ++k)
+    for (int d = 0; d < 3; ++d) spread[k][d] = spreadAxis(c[k] + d - 1, k);
   for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
-        const std::uint32_t key = ((cx + dx) & 1023u) | (((cy + dy) & 1023u) << 10) | (((cz + dz) & 1023u) << 20);
-        forEachInCell(g, key, lanes, f);
+        const std::uint32_t key = packCellKey(c[0] + dx, c[1] + dy, c[2] + dz);
+        const std::uint32_t b = (spread[0][dx + 1] | spread[1][dy + 1] | spread[2][dz + 1]) & g.bucketMask;
+        forEachInBucket(g, key, b, lanes, f);
       }
     }
   }
@@ -105,6 +121,53 @@ SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, co
 template <class F>
 SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, F&& f) {
   forEachCandidate(g, centerKey, Lanes{}, f);
+}
+
+// Calls f(key, first, end) for each cell of the 27 around x's cell that
+// comes within `reach` cell sizes of x, in the order of forEachCandidate:
+// the cell's bucket holds entries [first, end), those whose cellKey is key
+// belonging to the cell. For reach 1 (a search radius of one cell) about 21
+// of the 27 cells remain on average. The cell test keeps a margin of 1e-3
+// cell sizes, well above the rounding of x * invCellSize, so no pair within
+// reach is lost.
+template <class F>
+SOAK_INLINE void forEachCellWithin(const GridView& g, Vec3 x, float reach, F&& f) {
+  const float xs[3] = {x.x, x.y, x.z};
+  int c[3];
+  float below[3], above[3];  // squared distance to the cell below and above, per axis (cell sizes)
+  for (int k = 0; k < 3; ++k) {
+    c[k] = cellCoordinate(xs[k], g.invCellSize);
+    const float f0 = minf(maxf(xs[k] * g.invCellSize - float(c[k]), 0.f), 1.f);
+    below[k] = f0 * f0;
+    above[k] = (1.f - f0) * (1.f - f0);
+  }
+  const float limit = (reach + 1e-3f) * (reach + 1e-3f);
+  std::uint32_t spread[3][3];
+  for (int k = 0; k < 3; ++k)
+    for (int d = 0; d < 3; ++d) spread[k][d] = spreadAxis(c[k] + d - 1, k);
+  for (int dz = -1; dz <= 1; ++dz) {
+    const float ez = dz < 0 ? below[2] : (dz > 0 ? above[2] : 0.f);
+    for (int dy = -1; dy <= 1; ++dy) {
+      const float ey = ez + (dy < 0 ? below[1] : (dy > 0 ? above[1] : 0.f));
+      if (ey >= limit) continue;
+      for (int dx = -1; dx <= 1; ++dx) {
+        const float ex = ey + (dx < 0 ? below[0] : (dx > 0 ? above[0] : 0.f));
+        if (ex >= limit) continue;
+        const std::uint32_t key = packCellKey(c[0] + dx, c[1] + dy, c[2] + dz);
+        const std::uint32_t b = (spread[0][dx + 1] | spread[1][dy + 1] | spread[2][dz + 1]) & g.bucketMask;
+        f(key, g.start[b], g.end[b]);
+      }
+    }
+  }
+}
+
+// The slots of those cells, as forEachCandidate calls them (this lane's share).
+template <class F>
+SOAK_INLINE void forEachCandidateWithin(const GridView& g, Vec3 x, float reach, const Lanes& lanes, F&& f) {
+  forEachCellWithin(g, x, reach, [&](std::uint32_t key, std::uint32_t first, std::uint32_t end) {
+    for (std::uint32_t j = first + std::uint32_t(lanes.index); j < end; j += std::uint32_t(lanes.size))
+      if (g.cellKey[j] == key) f(slotOfEntry(g, j));
+  });
 }
 
 // Calls f(j) once for every slot j whose cell overlaps the box [lo, hi]
@@ -124,9 +187,14 @@ SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, cons
       a[k] = mid - kMaxBoxCells / 2;
       b[k] = a[k] + kMaxBoxCells - 1;
     }
-  for (int z = a[2]; z <= b[2]; ++z)
-    for (int y = a[1]; y <= b[1]; ++y)
-      for (int x = a[0]; x <= b[0]; ++x) forEachInCell(g, packCellKey(x, y, z), lanes, f);
+  for (int z = a[2]; z <= b[2]; ++z) {
+    const std::uint32_t sz = spreadAxis(z, 2);
+    for (int y = a[1]; y <= b[1]; ++y) {
+      const std::uint32_t syz = sz | spreadAxis(y, 1);
+      for (int x = a[0]; x <= b[0]; ++x)
+        forEachInBucket(g, packCellKey(x, y, z), (syz | spreadAxis(x, 0)) & g.bucketMask, lanes, f);
+    }
+  }
 }
 
 template <class F>

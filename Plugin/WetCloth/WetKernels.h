@@ -30,13 +30,13 @@ SOAK_INLINE float saturationOf(float c, float held, float volume) { return volum
 // Eq. 22 per vertex: 1 - max(0, S - S^T) / (S^MAX - S^T); a triangle's
 // kappa_couple is the mean of its three vertices' values, which is Eq. 22.
 SOAK_INLINE float couplingStiffnessOf(float S, float sT, float sMax) {
-  const float k = 1.f - fmaxf(S - sT, 0.f) / (sMax - sT);
-  return fminf(fmaxf(k, 0.f), 1.f);
+  const float k = 1.f - maxf(S - sT, 0.f) / (sMax - sT);
+  return minf(maxf(k, 0.f), 1.f);
 }
 
 // Eq. 20's magnitude, clamped at zero.
 SOAK_INLINE float stickingMagnitude(float Si, float Sj, float sT, float kappaAd, float etaAd) {
-  return fmaxf(etaAd - kappaAd * fabsf((Si - sT) * (Sj - sT)), 0.f);
+  return maxf(etaAd - kappaAd * fabsf((Si - sT) * (Sj - sT)), 0.f);
 }
 
 }  // namespace soak::wet

@@ -76,7 +76,7 @@ void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const Wet
     const int v = p.id[i];
     // Eq. 22 (per vertex), from all the water the particle carries, held and
     // buffered: cloth with excess water is the wettest (Doc/model.md).
-    const float wetness = fminf(saturationOf(c, held + a.buffer[i], V), sMax);
+    const float wetness = minf(saturationOf(c, held + a.buffer[i], V), sMax);
     a.kappaCouple[v] = couplingStiffnessOf(wetness, sT, sMax);
     if (wetWeight) {
       // Held and buffered water weigh on the cloth particle (the paper's rho0* = (m_i + m_j) / m_i).
@@ -106,7 +106,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     // same water drips over and over (9,268 drips in 0.6 s from a sheet
     // holding excess for 1,400; their pushing tore the sheet).
     if (a.buffer[i] > 0.f) return;
-    const float cap = fmaxf(sMax - saturationOf(c, a.held[i], a.volume[i]), 0.f) * a.volume[i] / c;
+    const float cap = maxf(sMax - saturationOf(c, a.held[i], a.volume[i]), 0.f) * a.volume[i] / c;
     if (cap <= 0.f) return;
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i];
@@ -159,7 +159,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     });
     given = laneSum(lanes, given);
     if (!lanes.leader() || given <= 0.f) return;
-    const float m = ratio[j] < 1.f ? 0.f : fmaxf(p.mass[j] - given, 0.f);
+    const float m = ratio[j] < 1.f ? 0.f : maxf(p.mass[j] - given, 0.f);
     p.mass[j] = m;
     if (m > 0.f) {
       // Adaptive sampling (Section 4.2): h' = (m' / m0)^(1/3) h0.
@@ -211,7 +211,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         });
         C = laneSum(lanes, C);
         if (!lanes.leader()) return;
-        const float Snew = fminf(fmaxf(S[i] + alpha[i] * C, 0.f), sMax);
+        const float Snew = minf(maxf(S[i] + alpha[i] * C, 0.f), sMax);
         next[i] = Snew * a.volume[i] / c;
       }, "wet.diffuse.literal");
     } else {
@@ -245,7 +245,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
                       limit[i];
         });
         change = laneSum(lanes, change);
-        if (lanes.leader()) next[i] = fmaxf(a.held[i] + change, 0.f);
+        if (lanes.leader()) next[i] = maxf(a.held[i] + change, 0.f);
       }, "wet.diffuse.exchange");
     }
     forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
