@@ -12,7 +12,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridStart_(device), dGridEnd_(device), dGridKey_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridRange_(device), dGridKey_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -208,23 +208,20 @@ void ClothSystem::buildGrid(GridView g) {
   // The cloth's grid: the same buckets as the full grid, its entries the
   // ordered slots (already sorted by bucket, as the particles are).
   const std::size_t buckets = std::size_t(g.bucketMask) + 1;
-  dGridStart_.resize(buckets);
-  dGridEnd_.resize(buckets);
-  dGridEnd_.fillZero();
-  std::uint32_t* start = dGridStart_.data();
-  std::uint32_t* end = dGridEnd_.data();
+  dGridRange_.resize(buckets);
+  dGridRange_.fillZero();
+  BucketRange* range = dGridRange_.data();
   std::uint32_t* key = dGridKey_.data();
   const int n = vertexCount();
   forEach(device_, n, SOAK_LAMBDA(int k) {
     const std::uint32_t kk = g.slotKey[ordered[k]];
     key[k] = kk;
     const std::uint32_t b = bucketOfKey(kk, g.bucketMask);
-    if (k == 0 || bucketOfKey(g.slotKey[ordered[k - 1]], g.bucketMask) != b) start[b] = std::uint32_t(k);
-    if (k == n - 1 || bucketOfKey(g.slotKey[ordered[k + 1]], g.bucketMask) != b) end[b] = std::uint32_t(k + 1);
+    if (k == 0 || bucketOfKey(g.slotKey[ordered[k - 1]], g.bucketMask) != b) range[b].start = std::uint32_t(k);
+    if (k == n - 1 || bucketOfKey(g.slotKey[ordered[k + 1]], g.bucketMask) != b) range[b].end = std::uint32_t(k + 1);
   }, "cloth.grid");
   clothGrid_ = g;
-  clothGrid_.start = start;
-  clothGrid_.end = end;
+  clothGrid_.range = range;
   clothGrid_.cellKey = key;
   clothGrid_.slot = ordered;
 }

@@ -175,7 +175,8 @@ class ClothSystem {
   Buffer<Vec3> dRest_;
   Buffer<Float4> dVertexScratch_;
   Buffer<int> dClothFlag_, dClothOffset_, dClothSlots_;  // per particle, per particle, per vertex
-  Buffer<std::uint32_t> dGridStart_, dGridEnd_, dGridKey_;  // the cloth grid: per bucket, per bucket, per vertex
+  Buffer<BucketRange> dGridRange_;  // the cloth grid: per bucket
+  Buffer<std::uint32_t> dGridKey_;  // the cloth grid: per vertex
   GridView clothGrid_;
   Buffer<float> scratch_;
 };

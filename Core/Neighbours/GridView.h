@@ -7,7 +7,7 @@
 // 2^bucketBits buckets by the low bits of the key's Morton code, which keeps
 // neighbouring cells in nearby buckets (locality) and uses memory in
 // proportion to the particle count, never to the extent of the domain.
-// Particles are sorted by bucket; bucket b holds slots [start[b], end[b]).
+// Particles are sorted by bucket; bucket b holds slots [range[b].start, range[b].end).
 // A bucket may hold several cells (hash collisions), so a candidate is
 // accepted only if its own cell key equals the visited cell's key: each
 // particle is then visited at most once per query, because the 27 cells
@@ -27,11 +27,16 @@
 
 namespace soak {
 
+// Bucket b's entries are [start, end); {0, 0} for an empty bucket. One
+// 8-byte load per visited cell (most cells a query visits hold nothing).
+struct alignas(8) BucketRange {
+  std::uint32_t start, end;
+};
+
 struct GridView {
   float invCellSize = 1.f;
   std::uint32_t bucketMask = 0;
-  const std::uint32_t* start = nullptr;    // per bucket
-  const std::uint32_t* end = nullptr;      // per bucket (0 for an empty bucket)
+  const BucketRange* range = nullptr;      // per bucket
   const std::uint32_t* cellKey = nullptr;  // per entry (for the full grid: per particle slot)
   const std::uint32_t* slotKey = nullptr;  // per particle slot: its cell key (query centres)
   const int* slot = nullptr;               // per entry: its particle slot; null: the entry is the slot
@@ -81,8 +86,8 @@ SOAK_INLINE std::uint32_t bucketOfKey(std::uint32_t key, std::uint32_t bucketMas
 // (forEachInBucket: the same where the caller knows the key's bucket.)
 template <class F>
 SOAK_INLINE void forEachInBucket(const GridView& g, std::uint32_t key, std::uint32_t b, const Lanes& lanes, F&& f) {
-  const std::uint32_t e = g.end[b];
-  for (std::uint32_t j = g.start[b] + std::uint32_t(lanes.index); j < e; j += std::uint32_t(lanes.size))
+  const BucketRange r = g.range[b];
+  for (std::uint32_t j = r.start + std::uint32_t(lanes.index); j < r.end; j += std::uint32_t(lanes.size))
     if (g.cellKey[j] == key) f(slotOfEntry(g, j));
 }
 
@@ -155,7 +160,8 @@ SOAK_INLINE void forEachCellWithin(const GridView& g, Vec3 x, float reach, F&& f
         if (ex >= limit) continue;
         const std::uint32_t key = packCellKey(c[0] + dx, c[1] + dy, c[2] + dz);
         const std::uint32_t b = (spread[0][dx + 1] | spread[1][dy + 1] | spread[2][dz + 1]) & g.bucketMask;
-        f(key, g.start[b], g.end[b]);
+        const BucketRange r = g.range[b];
+        f(key, r.start, r.end);
       }
     }
   }

@@ -11,8 +11,7 @@ namespace soak {
 
 NeighbourGrid::NeighbourGrid(Device device)
     : device_(device),
-      start_(device),
-      end_(device),
+      range_(device),
       cellKey_(device),
       bucket_(device),
       order_(device),
@@ -37,12 +36,11 @@ void NeighbourGrid::build(ParticleState& particles, float cellSize) {
   const std::uint32_t mask = buckets - 1u;
   const float inv = 1.f / cellSize;
 
-  start_.resize(buckets);
-  end_.resize(buckets);
+  range_.resize(buckets);
   cellKey_.resize(n);
   bucket_.resize(n);
   order_.resize(n);
-  end_.fillZero();
+  range_.fillZero();
   if (n == 0) return;
 
   ParticleView p = particles.view();
@@ -69,13 +67,12 @@ void NeighbourGrid::build(ParticleState& particles, float cellSize) {
   forEach(device_, n, SOAK_LAMBDA(int i) { sk[i] = ck[order[i]]; }, "grid.sortKeys");
   cellKey_.swap(sortedKeys_);
 
-  std::uint32_t* start = start_.data();
-  std::uint32_t* end = end_.data();
+  BucketRange* range = range_.data();
   const std::uint32_t* sb = bucket;
   forEach(device_, n, SOAK_LAMBDA(int i) {
     std::uint32_t b = sb[i];
-    if (i == 0 || sb[i - 1] != b) start[b] = static_cast<std::uint32_t>(i);
-    if (i == n - 1 || sb[i + 1] != b) end[b] = static_cast<std::uint32_t>(i + 1);
+    if (i == 0 || sb[i - 1] != b) range[b].start = static_cast<std::uint32_t>(i);
+    if (i == n - 1 || sb[i + 1] != b) range[b].end = static_cast<std::uint32_t>(i + 1);
   }, "grid.ranges");
 }
 
@@ -103,17 +100,16 @@ GridView NeighbourGrid::view() const {
   GridView g;
   g.invCellSize = 1.f / cellSize_;
   g.bucketMask = (1u << bucketBits_) - 1u;
-  g.start = start_.data();
-  g.end = end_.data();
+  g.range = range_.data();
   g.cellKey = cellKey_.data();
   g.slotKey = cellKey_.data();
   return g;
 }
 
 std::size_t NeighbourGrid::bytes() const {
-  return (start_.capacity() + end_.capacity() + cellKey_.capacity() + bucket_.capacity() + order_.capacity() +
-          sortedKeys_.capacity()) *
-         sizeof(std::uint32_t);
+  return range_.capacity() * sizeof(BucketRange) +
+         (cellKey_.capacity() + bucket_.capacity() + order_.capacity() + sortedKeys_.capacity()) *
+             sizeof(std::uint32_t);
 }
 
 void countNeighbours(Device device, const GridView& grid, ParticleView p, int* count) {

@@ -35,7 +35,8 @@ class NeighbourGrid {
   Device device_;
   float cellSize_ = 1.f;
   int bucketBits_ = 1;
-  Buffer<std::uint32_t> start_, end_, cellKey_, bucket_, order_, sortedKeys_;
+  Buffer<BucketRange> range_;
+  Buffer<std::uint32_t> cellKey_, bucket_, order_, sortedKeys_;
 };
 
 // Neighbours of every particle: count[i] = #{ j != i : |x_i - x_j| < max(h_i, h_j) }
