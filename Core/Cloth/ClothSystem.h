@@ -146,7 +146,6 @@ class ClothSystem {
   std::vector<ClothObject> objects_;
   // Host staging, in creation order until upload() colours them.
   std::vector<ClothEdge> edges_;
-  bool anyTethers_ = false;
   std::vector<float> edgeRest_;
   std::vector<ConstraintStiffness> edgeStiffness_;
   std::vector<ClothBend> bends_;
@@ -175,6 +174,7 @@ class ClothSystem {
   Buffer<Vec3> dRest_;
   Buffer<Float4> dVertexScratch_;
   Buffer<int> dClothFlag_, dClothOffset_, dClothSlots_;  // per particle, per particle, per vertex
+  bool anyTethers_ = false;  // some vertex has a tether (set by upload())
   Buffer<BucketRange> dGridRange_;  // the cloth grid: per bucket
   Buffer<std::uint32_t> dGridKey_;  // the cloth grid: per vertex
   GridView clothGrid_;

@@ -103,6 +103,14 @@ SOAK_INLINE std::uint32_t spreadAxis(int coordinate, int axis) {
   return spreadBits3(static_cast<std::uint32_t>(coordinate)) << axis;
 }
 
+// spread[k][d]: axis k's spread of coordinate c[k] + d - 1, for the 27 cells
+// around c (cell (c + d) has bucket spread[0][dx] | spread[1][dy] |
+// spread[2][dz], masked).
+SOAK_INLINE void spreadAround(const int c[3], std::uint32_t spread[3][3]) {
+  for (int k = 0; k < 3; ++k)
+    for (int d = 0; d < 3; ++d) spread[k][d] = spreadAxis(c[k] + d - 1, k);
+}
+
 // Calls f(j) once for every slot j whose cell is one of the 27 cells around
 // the cell with key `centerKey` (with `lanes`: this lane's share of them).
 // The caller applies its own distance test.
@@ -110,8 +118,7 @@ template <class F>
 SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, const Lanes& lanes, F&& f) {
   const int c[3] = {int(centerKey & 1023u), int((centerKey >> 10) & 1023u), int((centerKey >> 20) & 1023u)};
   std::uint32_t spread[3][3];
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d) spread[k][d] = spreadAxis(c[k] + d - 1, k);
+  spreadAround(c, spread);
   for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
@@ -148,8 +155,7 @@ SOAK_INLINE void forEachCellWithin(const GridView& g, Vec3 x, float reach, F&& f
   }
   const float limit = (reach + 1e-3f) * (reach + 1e-3f);
   std::uint32_t spread[3][3];
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d) spread[k][d] = spreadAxis(c[k] + d - 1, k);
+  spreadAround(c, spread);
   for (int dz = -1; dz <= 1; ++dz) {
     const float ez = dz < 0 ? below[2] : (dz > 0 ? above[2] : 0.f);
     for (int dy = -1; dy <= 1; ++dy) {
@@ -165,15 +171,6 @@ SOAK_INLINE void forEachCellWithin(const GridView& g, Vec3 x, float reach, F&& f
       }
     }
   }
-}
-
-// The slots of those cells, as forEachCandidate calls them (this lane's share).
-template <class F>
-SOAK_INLINE void forEachCandidateWithin(const GridView& g, Vec3 x, float reach, const Lanes& lanes, F&& f) {
-  forEachCellWithin(g, x, reach, [&](std::uint32_t key, std::uint32_t first, std::uint32_t end) {
-    for (std::uint32_t j = first + std::uint32_t(lanes.index); j < end; j += std::uint32_t(lanes.size))
-      if (g.cellKey[j] == key) f(slotOfEntry(g, j));
-  });
 }
 
 // Calls f(j) once for every slot j whose cell overlaps the box [lo, hi]
