@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -17,6 +18,7 @@ namespace {
 std::mutex g_mutex;
 std::unordered_map<const void*, std::size_t> g_sizes;
 std::size_t g_bytes[2] = {0, 0};
+std::atomic<unsigned long long> g_hostWaits{0};
 
 void remember(Device d, const void* p, std::size_t bytes) {
   std::lock_guard<std::mutex> lock(g_mutex);
@@ -49,7 +51,11 @@ Device resolveDevice(const std::string& request) {
   throw InputError("unknown device '" + request + "' (allowed: auto, cpu, cuda)");
 }
 
+unsigned long long hostWaits() { return g_hostWaits.load(); }
+void countHostWait() { ++g_hostWaits; }
+
 void synchronize(Device d) {
+  countHostWait();
   if (d == Device::Cuda) cuda::synchronize();
 }
 
@@ -74,6 +80,7 @@ void* deviceAllocate(Device d, std::size_t bytes) {
 
 void deviceFree(Device d, void* p) noexcept {
   if (!p) return;
+  countHostWait();
   forget(d, p);
   if (d == Device::Cuda) cuda::release(p);
   else std::free(p);
@@ -85,10 +92,12 @@ std::size_t deviceBytesInUse(Device d) {
 }
 
 void copyHostToDevice(Device d, void* dst, const void* src, std::size_t bytes) {
+  countHostWait();
   if (d == Device::Cuda) cuda::copy(dst, src, bytes, 0);
   else std::memcpy(dst, src, bytes);
 }
 void copyDeviceToHost(Device d, void* dst, const void* src, std::size_t bytes) {
+  countHostWait();
   if (d == Device::Cuda) cuda::copy(dst, src, bytes, 1);
   else std::memcpy(dst, src, bytes);
 }

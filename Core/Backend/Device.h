@@ -23,6 +23,14 @@ Device resolveDevice(const std::string& request);
 // Waits for all queued device work (no-op on CPU).
 void synchronize(Device d);
 
+// How many times the host has waited for the device so far: synchronize,
+// copies to or from host memory, freed device memory (cudaFree waits), and
+// the primitives that return a value (reductions, exclusiveScan). Counted on
+// both devices, so that a CPU test can check that a step never waits
+// (Simulation::step between maintenance steps; Doc/design.md).
+unsigned long long hostWaits();
+void countHostWait();
+
 // Raw memory on a device. Errors throw DeviceError.
 void* deviceAllocate(Device d, std::size_t bytes);
 void deviceFree(Device d, void* p) noexcept;

@@ -39,19 +39,23 @@ float minChunk(const float* x, int b, int e) {
 }  // namespace
 
 double reduceSum(Device d, const float* x, int n) {
+  countHostWait();
   if (d == Device::Cuda) return cuda::reduceSum(x, n);
   return chunkedReduce<double>(n, 0.0, sumChunk, x, [](double a, double b) { return a + b; });
 }
 float reduceMax(Device d, const float* x, int n) {
+  countHostWait();
   if (d == Device::Cuda) return cuda::reduceMax(x, n);
   return chunkedReduce<float>(n, -3.0e38f, maxChunk, x, [](float a, float b) { return std::max(a, b); });
 }
 float reduceMin(Device d, const float* x, int n) {
+  countHostWait();
   if (d == Device::Cuda) return cuda::reduceMin(x, n);
   return chunkedReduce<float>(n, 3.0e38f, minChunk, x, [](float a, float b) { return std::min(a, b); });
 }
 
 int exclusiveScan(Device d, const int* in, int* out, int n) {
+  countHostWait();
   if (d == Device::Cuda) return cuda::exclusiveScan(in, out, n);
   int total = 0;
   for (int i = 0; i < n; ++i) {

@@ -12,20 +12,19 @@ template <class F>
 SOAK_INLINE void forEachFluidCandidate(const ParticleView& p, const GridView& g, int i, float reach, F&& f) {
   const int phi = p.phase[i];
   const Float4 xi4 = p.predicted[i];
-  const bool water = isWater(phi);
-  if (!water && !(isCloth(phi) && xi4.w > 0.f)) return;
+  const bool moving = xi4.w > 0.f;
+  if (!isWater(phi) && !(isCloth(phi) && moving)) return;
   const Vec3 xi = xi4.xyz();
   const float hi = p.radius[i];
   forEachCandidate(g, g.slotKey[i], [&](int j) {
-    const int phj = p.phase[j];
-    if (water ? (!isWater(phj) && !isCloth(phj)) : !isWater(phj)) return;
+    if (!fluidPairKind(phi, moving, p.phase[j])) return;
     const float h = pairSupport(hi, p.radius[j]) * reach;
     if (lengthSquared(xi - p.predicted[j].xyz()) < h * h) f(j);
   });
 }
 }  // namespace
 
-void FluidNeighbours::build(ParticleView p, GridView g, float skin) {
+void FluidNeighbours::build(ParticleView p, GridView g, float skin, bool sizeExactly) {
   const float reach = 1.f + skin;
   const int n = p.count;
   start_.resize(std::size_t(n));
@@ -36,21 +35,40 @@ void FluidNeighbours::build(ParticleView p, GridView g, float skin) {
     forEachFluidCandidate(p, g, i, reach, [&](int) { ++c; });
     count[i] = c;
   }, "fluid.neighbours.count");
-  const int total = exclusiveScan(device_, count, start_.data(), n);
-  // Room for 1/8 more than now, so that a growing list does not double the
-  // buffer (Buffer::resize grows geometrically); the old contents are not needed.
-  const std::size_t entries = std::size_t(total > 0 ? total : 1);
-  if (entries > index_.capacity()) {
-    index_ = Buffer<int>(device_);
-    index_.reserve(entries + entries / 8);
+  if (sizeExactly) {
+    const int total = exclusiveScan(device_, count, start_.data(), n);
+    // Room for 1/8 more than now, so that a growing list does not double the
+    // buffer (Buffer::resize grows geometrically); the old contents are not needed.
+    const std::size_t entries = std::size_t(total > 0 ? total : 1);
+    if (entries > index_.capacity()) {
+      index_ = Buffer<int>(device_);
+      index_.reserve(entries + entries / 8);
+    }
+    index_.resize(index_.capacity());
+  } else {
+    exclusiveScanAsync(device_, count, start_.data(), n);
   }
-  index_.resize(entries);
+  const int capacity = int(index_.size());
   const int* start = start_.data();
   int* index = index_.data();
   forEach(device_, n, SOAK_LAMBDA(int i) {
     int k = start[i];
+    if (k + count[i] > capacity) return;  // no room: the passes query the grid (FluidNeighbours.h)
     forEachFluidCandidate(p, g, i, reach, [&](int j) { index[k++] = j; });
   }, "fluid.neighbours.fill");
+  view_ = {start, count, index, capacity, p.phase, p.predicted, g};
+}
+
+void FluidNeighbours::setCapacity(int entries) {
+  index_ = Buffer<int>(device_);
+  index_.resize(std::size_t(entries > 0 ? entries : 0));
+}
+
+int FluidNeighbours::particlesWithoutList() const {
+  const std::vector<int> start = start_.download(), count = count_.download();
+  int without = 0;
+  for (std::size_t i = 0; i < start.size(); ++i) without += start[i] + count[i] > view_.capacity ? 1 : 0;
+  return without;
 }
 
 }  // namespace soak

@@ -23,31 +23,60 @@ struct FluidNeighbourView {
   const int* start = nullptr;  // first entry of particle i
   const int* count = nullptr;  // entries of particle i
   const int* index = nullptr;  // neighbour slots
+  // Entries the index buffer holds. Its size is set from the host on
+  // maintenance steps only (Simulation.h); between them a particle whose
+  // entries would run past it has no list and queries the grid instead.
+  int capacity = 0;
+  const int* phase = nullptr;
+  const Float4* predicted = nullptr;
+  GridView grid;
 };
 
+// True when the pair (i, j) belongs in i's list, distance aside: a water
+// particle lists water and cloth, a moving cloth particle lists water.
+SOAK_INLINE bool fluidPairKind(int phaseI, bool movingI, int phaseJ) {
+  if (isWater(phaseI)) return isWater(phaseJ) || isCloth(phaseJ);
+  return isCloth(phaseI) && movingI && isWater(phaseJ);
+}
+
 // Calls f(j) for the listed neighbours of i (with `lanes`: this lane's
-// share, every lanes.size-th from lanes.index; Base/Lanes.h).
+// share, every lanes.size-th from lanes.index; Base/Lanes.h). Without a
+// list (past the capacity) the grid's candidates of the listed kinds, in
+// the grid's order: what a list of infinite skin would hold.
 template <class F>
 SOAK_INLINE void forEachListedNeighbour(const FluidNeighbourView& n, int i, const Lanes& lanes, F&& f) {
   const int s = n.start[i], e = s + n.count[i];
-  for (int k = s + lanes.index; k < e; k += lanes.size) f(n.index[k]);
-}
-
-template <class F>
-SOAK_INLINE void forEachListedNeighbour(const FluidNeighbourView& n, int i, F&& f) {
-  forEachListedNeighbour(n, i, Lanes{}, f);
+  if (e <= n.capacity) {
+    for (int k = s + lanes.index; k < e; k += lanes.size) f(n.index[k]);
+    return;
+  }
+  const int phi = n.phase[i];
+  const bool moving = n.predicted[i].w > 0.f;
+  forEachCandidate(n.grid, n.grid.slotKey[i], lanes, [&](int j) {
+    if (fluidPairKind(phi, moving, n.phase[j])) f(j);
+  });
 }
 
 class FluidNeighbours {
  public:
   explicit FluidNeighbours(Device d) : start_(d), count_(d), index_(d), device_(d) {}
   // Builds the lists from the predicted positions (after the grid build),
-  // keeping pairs within (1 + skin) h_ij (Water.neighbourSkin).
-  void build(ParticleView p, GridView g, float skin);
-  FluidNeighbourView view() const { return {start_.data(), count_.data(), index_.data()}; }
+  // keeping pairs within (1 + skin) h_ij (Water.neighbourSkin). With
+  // `sizeExactly` (a maintenance step) it reads the total back and makes
+  // room for all of them; otherwise nothing waits for the device and lists
+  // past the buffer's capacity are left out (the passes query the grid).
+  void build(ParticleView p, GridView g, float skin, bool sizeExactly);
+  FluidNeighbourView view() const { return view_; }
+  // The index buffer's size: which particles get a list depends on it, so a
+  // checkpoint keeps it (and the results stay bit-identical on resuming).
+  int capacity() const { return int(index_.size()); }
+  void setCapacity(int entries);
+  // Particles of the last build without a list (a download; for tests).
+  int particlesWithoutList() const;
 
  private:
   Buffer<int> start_, count_, index_;
+  FluidNeighbourView view_;
   Device device_;
 };
 

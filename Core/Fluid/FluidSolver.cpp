@@ -151,7 +151,7 @@ void FluidSolver::solve(Simulation& sim) {
   if (p.count == 0) return;
   resize(p.count);
   // Pairs within (1 + skin) h, once per step (FluidNeighbours.h).
-  neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin);
+  neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin, sim.maintenanceStep());
   const FluidNeighbourView g = neighbours_.view();
   const WaterSettings ws = sim.water;
   const float rho0 = ws.restDensity, m0 = ws.particleMass;

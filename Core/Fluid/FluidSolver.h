@@ -16,6 +16,9 @@ class Simulation;
 
 class FluidSolver {
  public:
+  // The neighbour lists' buffer (FluidNeighbours::capacity), for checkpoints.
+  int neighbourListCapacity() const { return neighbours_.capacity(); }
+  void setNeighbourListCapacity(int entries) { neighbours_.setCapacity(entries); }
   explicit FluidSolver(Device device);
   // Rest-lattice constants (the relaxation's reference denominator).
   void configure(const WaterSettings& water);

@@ -47,10 +47,12 @@ void NeighbourGrid::build(ParticleState& particles, float cellSize) {
   std::uint32_t* key = cellKey_.data();
   std::uint32_t* bucket = bucket_.data();
   std::uint32_t* order = order_.data();
+  // Removed slots (Particles/Phase.h) go past the last bucket: sorted to the
+  // end, in no bucket, never a candidate.
   forEach(device_, n, SOAK_LAMBDA(int i) {
     Float4 x = p.predicted[i];
     key[i] = cellKeyOf(x.xyz(), inv);
-    bucket[i] = bucketOfKey(key[i], mask);
+    bucket[i] = isRemoved(p.phase[i]) ? buckets : bucketOfKey(key[i], mask);
     order[i] = static_cast<std::uint32_t>(i);
   }, "grid.keys");
 
@@ -71,6 +73,7 @@ void NeighbourGrid::build(ParticleState& particles, float cellSize) {
   const std::uint32_t* sb = bucket;
   forEach(device_, n, SOAK_LAMBDA(int i) {
     std::uint32_t b = sb[i];
+    if (b == buckets) return;
     if (i == 0 || sb[i - 1] != b) range[b].start = static_cast<std::uint32_t>(i);
     if (i == n - 1 || sb[i + 1] != b) range[b].end = static_cast<std::uint32_t>(i + 1);
   }, "grid.ranges");
@@ -78,7 +81,7 @@ void NeighbourGrid::build(ParticleState& particles, float cellSize) {
 
 // Stable counting sort of slots by bucket (host memory).
 void NeighbourGrid::sortCpu(int n) {
-  const std::uint32_t buckets = 1u << bucketBits_;
+  const std::uint32_t buckets = (1u << bucketBits_) + 1u;  // the last: removed slots
   std::vector<std::uint32_t> offset(buckets + 1, 0);
   std::uint32_t* bucket = bucket_.data();
   for (int i = 0; i < n; ++i) ++offset[bucket[i] + 1];
@@ -94,7 +97,8 @@ void NeighbourGrid::sortCpu(int n) {
 }
 
 // Stable radix sort of (bucket, slot) pairs on the GPU.
-void NeighbourGrid::sortCuda(int n) { sortPairs(device_, bucket_.data(), order_.data(), n, bucketBits_); }
+// One bit more than the buckets need, for the removed slots' bucket.
+void NeighbourGrid::sortCuda(int n) { sortPairs(device_, bucket_.data(), order_.data(), n, bucketBits_ + 1); }
 
 GridView NeighbourGrid::view() const {
   GridView g;

@@ -29,6 +29,7 @@ ParticleState::ParticleState(Device device)
       id_(device),
       order_(device),
       keepScan_(device),
+      keepOffset_(device),
       scratch_(device) {}
 
 template <class F>
@@ -92,6 +93,16 @@ int ParticleState::append(const std::vector<ParticleInit>& particles) {
   return first;
 }
 
+int ParticleState::appendSlots(int k) {
+  const int first = count_;
+  if (k <= 0) return first;
+  const int n = first + k;
+  forEachArray([&](auto& b) { b.resize(static_cast<std::size_t>(n)); });
+  for (Channel& c : channels_) fillBytes(device_, c.data.data() + first, 0, sizeof(float) * k);
+  count_ = n;
+  return first;
+}
+
 int ParticleState::removeFlagged(const int* remove) {
   const int n = count_;
   if (n == 0) return 0;
@@ -99,8 +110,8 @@ int ParticleState::removeFlagged(const int* remove) {
   order_.resize(n);
   int* keep = keepScan_.data();
   forEach(device_, n, SOAK_LAMBDA(int i) { keep[i] = remove[i] ? 0 : 1; }, "removeFlagged.keep");
-  Buffer<int> offsets(device_, n);
-  int* off = offsets.data();
+  keepOffset_.resize(n);
+  int* off = keepOffset_.data();
   const int kept = exclusiveScan(device_, keep, off, n);
   if (kept == n) return 0;
   std::uint32_t* order = order_.data();

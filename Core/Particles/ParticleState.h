@@ -53,6 +53,9 @@ class ParticleState {
   // Appends particles at the end (slots count()..count()+k-1). Extra
   // channels of new particles are zero. Returns the first new slot.
   int append(const std::vector<ParticleInit>& particles);
+  // Appends k slots whose arrays the caller fills on the device (nothing
+  // crosses from the host; channels are zeroed). Returns the first new slot.
+  int appendSlots(int k);
   // Removes every slot i with remove[i] != 0, keeping the order of the rest.
   // Returns how many were removed.
   int removeFlagged(const int* remove);
@@ -101,7 +104,7 @@ class ParticleState {
   std::vector<Channel> channels_;
   // Scratch for gather/compaction.
   Buffer<std::uint32_t> order_;
-  Buffer<int> keepScan_;
+  Buffer<int> keepScan_, keepOffset_;
   Buffer<char> scratch_;
 };
 

@@ -15,7 +15,7 @@ namespace soak {
 Simulation::Simulation(Device device)
     : particles(device), grid(device), cloth(device), fluid(device), device_(device), contactDelta_(device),
       instabilityScratch_(device), substepStart_(device), substepVelocity_(device), velocityFix_(device),
-      removeFlag_(device), removedMass_(device), removedCount_(device), sinkBuffer_(device), colliderBuffer_(device) {}
+      removeFlag_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
 Simulation::~Simulation() = default;
 
@@ -100,44 +100,57 @@ void Simulation::addCoreStages() {
 
 void Simulation::drainWater() {
   ParticleView p = particles.view();
-  if (p.count == 0) return;
-  removeFlag_.resize(p.count);
-  removedMass_.resize(p.count);
-  removedCount_.resize(p.count);
-  int* flag = removeFlag_.data();
-  float* removedCount = removedCount_.data();
-  float* removed = removedMass_.data();
   const Vec3 lo = settings.domainMin, hi = settings.domainMax;
   const Vec3* sinkBox = sinkBuffer_.data();
   const int sinkCount = int(sinks.size());
-  forEach(device_, p.count, SOAK_LAMBDA(int i) {
-    flag[i] = 0;
-    removed[i] = 0.f;
-    removedCount[i] = 0.f;
+  // Marks the slots, nothing more: the host learns of them at the next
+  // compaction (no reduction here, so that the step never waits).
+  if (p.count > 0) forEach(device_, p.count, SOAK_LAMBDA(int i) {
     if (!isWater(p.phase[i])) return;
-    if (p.mass[i] <= 0.f) {  // wholly absorbed by cloth last step (its mass is held there now)
-      flag[i] = 1;
-      removedCount[i] = 1.f;
-      return;
-    }
+    bool out = !(p.mass[i] > 0.f);  // wholly absorbed by cloth (its mass is held there now)
     const Vec3 x = p.position[i].xyz();
     // A non-finite position is an instability, not water that left the
     // domain: keep it for the check (Instability.h) to report.
-    if (!isFinite(x)) return;
-    bool out = !(x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z);
+    if (!out && !isFinite(x)) return;
+    if (!out) out = !(x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z);
     for (int k = 0; k < sinkCount && !out; ++k) {
       const Vec3 a = sinkBox[2 * k], b = sinkBox[2 * k + 1];
       out = x.x >= a.x && x.y >= a.y && x.z >= a.z && x.x <= b.x && x.y <= b.y && x.z <= b.z;
     }
-    if (out) {
-      flag[i] = 1;
-      removed[i] = p.mass[i];
-      removedCount[i] = 1.f;
-    }
-  }, "drain.flag");
-  if (reduceSum(device_, removedCount, p.count) == 0.0) return;
+    if (!out) return;
+    // Inert from here on; a drained slot keeps its mass (counted at compaction).
+    p.phase[i] = kPhaseRemoved;
+    if (!(p.mass[i] > 0.f)) p.mass[i] = 0.f;
+    p.position[i] = Float4(x, 0.f);
+    p.predicted[i] = Float4(x, 0.f);
+    p.velocity[i] = Vec3(0.f, 0.f, 0.f);
+  }, "drain.mark");
+  if (maintenanceStep()) compact();
+}
+
+void Simulation::compact() {
+  ParticleView p = particles.view();
+  if (p.count == 0) return;
+  removeFlag_.resize(p.count);
+  removedMass_.resize(p.count);
+  int* flag = removeFlag_.data();
+  float* removed = removedMass_.data();
+  forEach(device_, p.count, SOAK_LAMBDA(int i) {
+    const bool gone = isRemoved(p.phase[i]);
+    flag[i] = gone ? 1 : 0;
+    removed[i] = gone ? p.mass[i] : 0.f;
+  }, "compact.flag");
   drainedWaterMass += reduceSum(device_, removed, p.count);
-  particles.removeFlagged(flag);
+  if (particles.removeFlagged(flag) > 0 && !cloth.empty()) cloth.updateSlots(particles.view());
+}
+
+double Simulation::pendingDrainedMass() {
+  const std::vector<int> phase = particles.downloadPhases();
+  const std::vector<float> mass = particles.downloadMasses();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < phase.size(); ++i)
+    if (isRemoved(phase[i])) sum += mass[i];
+  return sum;
 }
 
 void Simulation::step(bool profile) {
@@ -158,14 +171,20 @@ void Simulation::step(bool profile) {
   time_ = double(stepIndex_) * settings.timeStep;
 }
 
+bool Simulation::maintenanceStep() const {
+  return maintenanceInterval <= 1 || stepIndex_ % maintenanceInterval == 0;
+}
+
 StatsRow Simulation::collectStats() {
   StatsRow row;
   std::vector<int> phase = particles.downloadPhases();
   std::vector<float> mass = particles.downloadMasses();
   long long water = 0, clothCount = 0;
-  double waterMass = 0.0;
+  double waterMass = 0.0, pendingDrained = 0.0;
   for (std::size_t i = 0; i < phase.size(); ++i) {
-    if (isWater(phase[i])) {
+    if (isRemoved(phase[i])) {
+      pendingDrained += mass[i];
+    } else if (isWater(phase[i])) {
       ++water;
       waterMass += mass[i];
     } else if (isCloth(phase[i])) {
@@ -182,7 +201,7 @@ StatsRow Simulation::collectStats() {
   row.add("water_particles", double(water));
   row.add("cloth_particles", double(clothCount));
   row.add("free_water_mass", waterMass);
-  row.add("drained_water_mass", drainedWaterMass);
+  row.add("drained_water_mass", drainedWaterMass + pendingDrained);
   row.add("emitted_water_mass", emittedWaterMass);
   double meanError = 0.0;
   float maxError = 0.f;

@@ -36,8 +36,24 @@ class Simulation {
   // One time step.
   void step(bool profile = false);
 
-  // Removes water inside sinks or outside the domain (counted as drained).
+  // Marks water inside sinks, outside the domain or wholly absorbed as
+  // removed (kPhaseRemoved); on a maintenance step, compacts.
   void drainWater();
+
+  // Counts stay on the device: a step waits for the device (hostWaits())
+  // only on maintenance steps, those whose index is a multiple of
+  // maintenanceInterval (the first step among them, and a step after a
+  // checkpoint is loaded is no different from the uninterrupted run's). There the drain stage compacts,
+  // the fluid's neighbour lists are sized exactly, and modules read their
+  // device counters back (Module::beforeStep sees maintenanceStep()).
+  int maintenanceInterval = 16;
+  bool maintenanceStep() const;
+  // Drops the removed slots (drained mass into drainedWaterMass, in the
+  // particles' order otherwise): the drain stage does it on maintenance steps.
+  void compact();
+  // Mass in removed slots not yet compacted: drained, not yet counted in
+  // drainedWaterMass (a download; for stats and tests).
+  double pendingDrainedMass();
 
   // Counts and water budget for stats.csv (one reduction per call).
   StatsRow collectStats();
@@ -91,7 +107,8 @@ class Simulation {
   void collidersChanged() { collidersDirty_ = true; }
   const Collider* deviceColliders() const { return colliderBuffer_.data(); }
 
-  // Water mass removed by sinks or by leaving the domain (kg).
+  // Water mass removed by sinks or by leaving the domain (kg), as of the
+  // last compaction; add pendingDrainedMass() for the mass drained since.
   double drainedWaterMass = 0.0;
   // Water mass added by emitters after the start (kg).
   double emittedWaterMass = 0.0;
@@ -106,7 +123,7 @@ class Simulation {
   Buffer<Float4> substepStart_;  // cloth sub-steps
   Buffer<Vec3> substepVelocity_, velocityFix_;
   Buffer<int> removeFlag_;
-  Buffer<float> removedMass_, removedCount_;
+  Buffer<float> removedMass_;
   Buffer<Vec3> sinkBuffer_;
   std::vector<std::unique_ptr<Module>> modules_;
   Buffer<Collider> colliderBuffer_;

@@ -14,6 +14,7 @@ void Simulation::saveState(StateWriter& out) const {
   out.put<std::int32_t>(nextWaterId);
   out.put<std::int32_t>(cloth.vertexCount());
   particles.saveState(out);
+  out.put<std::int32_t>(fluid.neighbourListCapacity());
   out.put<std::int32_t>(static_cast<std::int32_t>(modules_.size()));
   for (const auto& m : modules_) {
     const Module& module = *m;
@@ -33,6 +34,8 @@ void Simulation::loadState(StateReader& in) {
     in.fail("it was written for " + std::to_string(clothVertices) + " cloth vertices, the scene makes " +
             std::to_string(cloth.vertexCount()) + " (did a mesh change?)");
   particles.loadState(in);
+  const int listCapacity = in.get<std::int32_t>();
+  if (listCapacity < 0) in.fail("negative neighbour list capacity");
   const int moduleCount = in.get<std::int32_t>();
   if (moduleCount != int(modules_.size()))
     in.fail("it was written for " + std::to_string(moduleCount) + " scene elements, the scene has " +
@@ -48,6 +51,7 @@ void Simulation::loadState(StateReader& in) {
   drainedWaterMass = drained;
   emittedWaterMass = emitted;
   nextWaterId = nextId;
+  fluid.setNeighbourListCapacity(listCapacity);
   cloth.updateSlots(particles.view());
   collidersDirty_ = true;
 }

@@ -2,7 +2,9 @@
 #include <cmath>
 
 #include "Base/Error.h"
+#include "Backend/Buffer.h"
 #include "Checkpoint/StateStream.h"
+#include "Particles/NewParticles.h"
 #include "Registry/ModuleRegistry.h"
 #include "Simulation/ElementGroups.h"
 #include "Simulation/Simulation.h"
@@ -31,6 +33,8 @@ class NozzleModule : public Module {
         if (a * a + b * b <= radius * radius) disc_.push_back(u * a + v * b);
       }
     if (disc_.empty()) disc_.push_back(Vec3(0.f, 0.f, 0.f));
+    discOnDevice_ = Buffer<Vec3>(sim.device());
+    discOnDevice_.upload(disc_);
     speed_ = p_.realf("speed");
     layerSpacing_ = s;
     const double rate = p_.real("rate");
@@ -48,26 +52,24 @@ class NozzleModule : public Module {
     const double t = sim.time(), dt = sim.settings.timeStep;
     if (t + dt <= p_.real("start") || t >= p_.real("stop")) return;
     travelled_ += double(speed_) * dt;
-    std::vector<ParticleInit> batch;
-    const Vec3 centre = p_.vector("position"), vel = dir_ * speed_;
+    const int k = int(disc_.size());
+    WaterLayer layer;
+    layer.origin = p_.vector("position");
+    layer.direction = dir_;
+    layer.velocity = dir_ * speed_;
+    layer.mass = sim.water.particleMass;
+    layer.radius = sim.water.supportRadius;
     while (travelled_ >= layerSpacing_) {
       travelled_ -= layerSpacing_;
       // Born travelled_ / speed ago; predict() moves it one full step, so start it that much behind.
-      const float ahead = float(travelled_) - speed_ * float(dt);
-      for (const Vec3& off : disc_) {
-        ParticleInit q;
-        q.position = centre + off + dir_ * ahead;
-        q.velocity = vel;
-        q.mass = sim.water.particleMass;
-        q.radius = sim.water.supportRadius;
-        q.phase = kPhaseWater;
-        q.id = sim.nextWaterId++;
-        batch.push_back(q);
-      }
+      layer.along = float(travelled_) - speed_ * float(dt);
+      layer.firstId = sim.nextWaterId;
+      sim.nextWaterId += k;
+      // Written on the device: nothing crosses from the host inside the step.
+      const int first = sim.particles.appendSlots(k);
+      writeWaterLayer(sim.device(), sim.particles.view(), first, discOnDevice_.data(), k, layer);
+      sim.emittedWaterMass += double(k) * double(sim.water.particleMass);
     }
-    if (batch.empty()) return;
-    sim.particles.append(batch);
-    sim.emittedWaterMass += double(batch.size()) * double(sim.water.particleMass);
   }
   // How far the water has moved since the last layer: the phase of the jet.
   void saveState(StateWriter& out) const override { out.put<double>(travelled_); }
@@ -77,6 +79,7 @@ class NozzleModule : public Module {
   ElementParams p_;
   Vec3 dir_;
   std::vector<Vec3> disc_;
+  Buffer<Vec3> discOnDevice_;
   float speed_ = 0.f, layerSpacing_ = 0.f;
   double travelled_ = 0.0;
 };

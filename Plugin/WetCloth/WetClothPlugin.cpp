@@ -2,6 +2,7 @@
 // (Section 4) on for every cloth in the scene. It declares its parameters
 // (Table 1 defaults), inserts its stages at the places of Algorithm 1 and
 // adds its columns to stats.csv.
+#include <algorithm>
 #include <cmath>
 
 #include "Backend/Primitives.h"
@@ -39,9 +40,12 @@ class WetClothModule : public Module {
     // Every array on the simulation's device (the Buffer members start on the CPU).
     for (Buffer<float>* b : {&dryMass_, &kappa_, &scratchA_, &scratchB_, &scratchC_}) *b = Buffer<float>(sim.device());
     delta_ = Buffer<Vec3>(sim.device());
-    spawn_ = Buffer<int>(sim.device());
+    due_ = Buffer<int>(sim.device());
     dripOffset_ = Buffer<int>(sim.device());
     dripSources_ = Buffer<DripSource>(sim.device());
+    dripCounters_ = Buffer<DripCounters>(sim.device());
+    dripCounters_.upload({DripCounters{}});
+    dripRoomCap_ = std::max(kMinDripRoom, sim.cloth.vertexCount() / 32);
     dryMass_.upload(dry);
     kappa_.upload(std::vector<float>(std::size_t(vertices), 1.f));
     sim.couplingStiffness = kappa_.data();
@@ -64,39 +68,65 @@ class WetClothModule : public Module {
   }
 
   void beforeStep(Simulation& sim) override {
-    // Drips decided in the last step's wet.emit join the water here, before
-    // the grid is built (as the nozzle's particles do).
-    if (pendingDrips_.empty()) return;
-    sim.particles.append(pendingDrips_);
-    pendingDrips_.clear();
-    pendingDripMass_ = 0.0;
+    // Drips taken in the last step's wet.emit join the water here, before
+    // the grid is built (as the nozzle's particles do): `takenRoom_` slots,
+    // of which the device knows how many are drips; the rest stay removed
+    // until the next compaction.
+    if (takenRoom_ > 0) {
+      const int first = sim.particles.appendSlots(takenRoom_);
+      DripShape shape = dripShape(sim);
+      shape.firstId = sim.nextWaterId;
+      sim.nextWaterId += takenRoom_;
+      placeDrips(sim.device(), sim.particles.view(), first, takenRoom_, dripSources_.data(), shape,
+                 dripCounters_.data());
+      takenRoom_ = 0;
+    }
+    if (w_.emission && sim.maintenanceStep()) resizeDripRoom();
   }
 
-  // Drips queued for the next step, the drip counter, and whether the
-  // initial saturation was already given (the held water is a particle channel).
+  // Drips taken but not yet placed, the room they were taken with and the
+  // counters, and whether the initial saturation was already given (the
+  // held water is a particle channel).
   void saveState(StateWriter& out) const override {
-    out.putVector(pendingDrips_);
-    out.put<double>(pendingDripMass_);
-    out.put<std::int64_t>(dripsSpawned_);
+    const DripCounters c = counters();
+    std::vector<DripSource> pending = dripSources_.download();
+    pending.resize(std::size_t(c.pending));
+    out.putVector(pending);
+    out.put<std::int32_t>(takenRoom_);
+    out.put<std::int32_t>(dripRoom_);
+    out.put<std::int32_t>(c.largestStep);
+    out.put<std::int64_t>(c.spawned);
+    out.put<std::int64_t>(c.deferred);
     out.put<std::int32_t>(initialised_ ? 1 : 0);
   }
   void loadState(StateReader& in) override {
-    pendingDrips_ = in.getVector<ParticleInit>();
-    pendingDripMass_ = in.get<double>();
-    dripsSpawned_ = in.get<std::int64_t>();
+    const std::vector<DripSource> pending = in.getVector<DripSource>();
+    takenRoom_ = in.get<std::int32_t>();
+    dripRoom_ = in.get<std::int32_t>();
+    DripCounters c;
+    c.pending = int(pending.size());
+    c.largestStep = in.get<std::int32_t>();
+    c.spawned = in.get<std::int64_t>();
+    c.deferred = in.get<std::int64_t>();
     initialised_ = in.get<std::int32_t>() != 0;
+    if (c.pending > takenRoom_ || dripRoom_ < 1) in.fail("drip bookkeeping out of range");
+    dripSources_.upload(pending);
+    dripCounters_.upload({c});
   }
 
   void addStats(Simulation& sim, StatsRow& row) override {
     const int n = sim.particles.count();
     const double held = reduceSum(sim.device(), sim.particles.channel(held_), n);
-    const double buffered = reduceSum(sim.device(), sim.particles.channel(buffer_), n) + pendingDripMass_;
+    const DripCounters drips = counters();
+    const double buffered =
+        reduceSum(sim.device(), sim.particles.channel(buffer_), n) + double(drips.pending) * double(w_.mThreshold);
     const double free = row.get("free_water_mass");
     row.add("held_water_mass", held);
     row.add("buffered_water_mass", buffered);
-    row.add("total_water_mass", free + held + buffered + sim.drainedWaterMass);
+    row.add("total_water_mass", free + held + buffered + row.get("drained_water_mass"));
     row.add("max_saturation", n > 0 ? std::max(0.f, reduceMax(sim.device(), sim.particles.channel(saturation_), n)) : 0.0);
-    row.add("drips_spawned", double(dripsSpawned_));
+    row.add("drips_spawned", double(drips.spawned));
+    row.add("drips_deferred", double(drips.deferred));
   }
 
  private:
@@ -105,7 +135,6 @@ class WetClothModule : public Module {
     const std::size_t n = std::size_t(ps.count());
     for (Buffer<float>* b : {&scratchA_, &scratchB_, &scratchC_}) b->resize(n);
     delta_.resize(n);
-    spawn_.resize(n);
     WetArrays a;
     a.held = ps.channel(held_);
     a.buffer = ps.channel(buffer_);
@@ -136,9 +165,12 @@ class WetClothModule : public Module {
     WetArrays a = arrays(s);
     ParticleView p = s.particles.view();
     transferBuffers(s.device(), p, s.grid.view(), a, w_, ref_);
+    due_.resize(std::size_t(p.count));
     dripOffset_.resize(std::size_t(p.count));
-    const int drips = takeDripMass(s.device(), p, a, w_, spawn_.data(), dripOffset_.data());
-    if (drips > 0) queueDrips(s, drips);
+    dripSources_.resize(std::size_t(dripRoom_));
+    takeDripMass(s.device(), p, a, w_, dripRoom_, due_.data(), dripOffset_.data(), dripSources_.data(),
+                 dripCounters_.data());
+    takenRoom_ = dripRoom_;
     attractDrips(s.device(), p, s.grid.view(), a, w_, ref_, float(s.settings.timeStep));
   }
   void stick(Simulation& s) {
@@ -151,24 +183,29 @@ class WetClothModule : public Module {
   // starts below its cloth particle, a drip spacing plus half the cloth
   // thickness away, so that it does not overlap the water already there
   // (the role of Lin's placement in the paper), with the particle's velocity.
-  void queueDrips(Simulation& s, int drips) {
-    dripSources_.resize(std::size_t(drips));
-    gatherDripSources(s.device(), s.particles.view(), spawn_.data(), dripOffset_.data(), dripSources_.data());
-    const std::vector<DripSource> sources = dripSources_.download();
+  DripShape dripShape(const Simulation& s) const {
     const float scale = std::cbrt(w_.mThreshold / ref_.mass);
     const float offset = 0.5f * s.cloth.maxThickness() + 0.5f * s.water.spacing * scale;
-    for (const DripSource& source : sources) {
-      ParticleInit q;
-      q.position = source.position + ref_.gravityDir * offset;
-      q.velocity = source.velocity;
-      q.mass = w_.mThreshold;
-      q.radius = ref_.supportRadius * scale;
-      q.phase = kPhaseWater;
-      q.id = s.nextWaterId++;
-      pendingDrips_.push_back(q);
-      pendingDripMass_ += double(w_.mThreshold);
-      ++dripsSpawned_;
-    }
+    DripShape shape;
+    shape.below = ref_.gravityDir * offset;
+    shape.mass = w_.mThreshold;
+    shape.radius = ref_.supportRadius * scale;
+    return shape;
+  }
+
+  DripCounters counters() const { return dripCounters_.download().at(0); }
+
+  // On a maintenance step: room for twice the most drips one step has
+  // wanted since the last, a power of two from kMinDripRoom up to one per 32
+  // cloth vertices. Drips past the room wait a step or more (counted in
+  // drips_deferred; Doc/design.md).
+  void resizeDripRoom() {
+    DripCounters c = counters();
+    int room = kMinDripRoom;
+    while (room < 2 * c.largestStep && room < dripRoomCap_) room *= 2;
+    dripRoom_ = std::min(room, std::max(kMinDripRoom, dripRoomCap_));
+    c.largestStep = 0;
+    dripCounters_.upload({c});
   }
 
   // Every cloth particle starts holding S V / c of water (for scenes that
@@ -197,11 +234,13 @@ class WetClothModule : public Module {
   int held_ = -1, buffer_ = -1, saturation_ = -1, volume_ = -1;
   Buffer<float> dryMass_, kappa_, scratchA_, scratchB_, scratchC_;
   Buffer<Vec3> delta_;
-  Buffer<int> spawn_, dripOffset_;
+  static constexpr int kMinDripRoom = 8;
+  Buffer<int> due_, dripOffset_;
   Buffer<DripSource> dripSources_;
-  std::vector<ParticleInit> pendingDrips_;
-  double pendingDripMass_ = 0.0;
-  long long dripsSpawned_ = 0;
+  Buffer<DripCounters> dripCounters_;
+  int dripRoom_ = kMinDripRoom;  // drips one step may take
+  int dripRoomCap_ = kMinDripRoom;
+  int takenRoom_ = 0;  // the room the last step took drips with: slots to append next step
   bool initialised_ = false;
 };
 

@@ -310,22 +310,54 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   }, "wet.emit.apply");
 }
 
-int takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int* spawn, int* offsets) {
+void takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int room, int* due, int* offsets,
+                  DripSource* sources, DripCounters* counters) {
   const float mThr = w.mThreshold;
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    spawn[i] = 0;
-    if (!isCloth(p.phase[i]) || !(a.buffer[i] >= mThr)) return;
+  const int n = p.count;
+  if (n == 0) return;
+  forEach(d, n, SOAK_LAMBDA(int i) {
+    due[i] = isCloth(p.phase[i]) && a.buffer[i] >= mThr ? 1 : 0;
+  }, "wet.emit.due");
+  exclusiveScanAsync(d, due, offsets, n);
+  forEach(d, n, SOAK_LAMBDA(int i) {
+    if (!due[i] || offsets[i] >= room) return;
     a.buffer[i] -= mThr;
-    spawn[i] = 1;
-  }, "wet.emit.drips");
-  return exclusiveScan(d, spawn, offsets, p.count);
+    sources[offsets[i]] = {p.predicted[i].xyz(), p.velocity[i]};
+  }, "wet.emit.take");
+  forEach(d, 1, SOAK_LAMBDA(int) {
+    const int wanted = offsets[n - 1] + due[n - 1], taken = wanted < room ? wanted : room;
+    counters->pending = taken;
+    if (wanted > counters->largestStep) counters->largestStep = wanted;
+    counters->spawned += taken;
+    counters->deferred += wanted - taken;
+  }, "wet.emit.count");
 }
 
-void gatherDripSources(Device d, ParticleView p, const int* spawn, const int* offsets, DripSource* out) {
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    if (!spawn[i]) return;
-    out[offsets[i]] = {p.predicted[i].xyz(), p.velocity[i]};
-  }, "wet.emit.gather");
+void placeDrips(Device d, ParticleView p, int first, int room, const DripSource* sources, const DripShape& shape,
+                DripCounters* counters) {
+  const DripShape s = shape;
+  forEach(d, room, SOAK_LAMBDA(int k) {
+    const int i = first + k;
+    if (k < counters->pending) {
+      const Float4 x(sources[k].position + s.below, 1.f / s.mass);
+      p.position[i] = x;
+      p.predicted[i] = x;
+      p.velocity[i] = sources[k].velocity;
+      p.mass[i] = s.mass;
+      p.radius[i] = s.radius;
+      p.phase[i] = kPhaseWater;
+      p.id[i] = s.firstId + k;
+    } else {
+      p.position[i] = Float4(0.f, 0.f, 0.f, 0.f);
+      p.predicted[i] = Float4(0.f, 0.f, 0.f, 0.f);
+      p.velocity[i] = Vec3(0.f, 0.f, 0.f);
+      p.mass[i] = 0.f;
+      p.radius[i] = s.radius;
+      p.phase[i] = kPhaseRemoved;
+      p.id[i] = -1;
+    }
+  }, "wet.drips.place");
+  forEach(d, 1, SOAK_LAMBDA(int) { counters->pending = 0; }, "wet.drips.placed");
 }
 
 void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,

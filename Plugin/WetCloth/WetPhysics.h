@@ -53,20 +53,41 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
 // where gravity overcomes the saturation difference above.
 void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref);
 
-// Takes m_threshold from every buffer that holds at least that much; `spawn`
-// gets 1 where a drip is due (the caller creates the particles) and
-// `offsets` its exclusive scan (the drip's index). Returns the number of
-// drips.
-int takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int* spawn, int* offsets);
-
 // Where a drip starts: its cloth particle's predicted position and velocity.
 struct DripSource {
   Vec3 position;
   Vec3 velocity;
 };
-// Packs the sources of the drips flagged by takeDripMass, in slot order, so
-// that only they cross to the host (not whole particle arrays).
-void gatherDripSources(Device d, ParticleView p, const int* spawn, const int* offsets, DripSource* out);
+
+// The drips' bookkeeping, in device memory: the step never reads it back
+// (the plugin does on maintenance steps and for stats).
+struct DripCounters {
+  int pending = 0;          // drips taken this step, made at the start of the next
+  int largestStep = 0;      // most drips due in one step since the plugin last looked
+  long long spawned = 0;    // drips taken since the start
+  long long deferred = 0;   // drips due but left for a later step for want of room
+};
+
+// Drips are due where a cloth buffer holds at least m_threshold. The first
+// `room` of them in slot order take m_threshold from their buffer and leave
+// their source in sources[0..pending); the others keep it and drip in a
+// later step. `due` and `offsets` are scratch of p.count ints. Nothing waits
+// for the device.
+void takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int room, int* due, int* offsets,
+                  DripSource* sources, DripCounters* counters);
+
+// What a drip is, besides where it starts (Section 4.4): mass m_threshold,
+// radius (m / m0)^(1/3) h0, `below` added to its source's position.
+struct DripShape {
+  Vec3 below;
+  float mass = 0.f, radius = 0.f;
+  int firstId = 0;
+};
+// Fills the `room` slots appended at `first` (ParticleState::appendSlots):
+// the first counters->pending become the drips taken last step (serial
+// numbers firstId + k), the rest removed slots; then nothing is pending.
+void placeDrips(Device d, ParticleView p, int first, int room, const DripSource* sources, const DripShape& shape,
+                DripCounters* counters);
 
 // wet.emit, second half (Eq. 19): cloth attracts water particles lighter
 // than m0 (drips and partly absorbed particles), as a position change
