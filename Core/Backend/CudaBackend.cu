@@ -22,9 +22,9 @@ struct Scratch {
   std::size_t bytes = 0;
   void* get(std::size_t need) {
     if (need > bytes) {
-      if (ptr) cudaFree(ptr);
+      if (ptr) cudaFreeAsync(ptr, 0);
       bytes = need + need / 2;
-      check(cudaMalloc(&ptr, bytes), "scratch allocation");
+      check(cudaMallocAsync(&ptr, bytes, 0), "scratch allocation");
     }
     return ptr;
   }
@@ -84,9 +84,24 @@ std::size_t memoryBytes() {
 
 void synchronize() { check(cudaDeviceSynchronize(), "synchronize"); }
 
+// Stream-ordered allocation (cudaMallocAsync on the default stream, where
+// all our work runs): freeing a buffer that grew does not wait for the
+// device as cudaFree does, so a step that grows a buffer still never waits.
+// The pool keeps what is freed instead of returning it at every wait.
 void* allocate(std::size_t bytes) {
+  static const bool poolKept = [] {
+    int dev = 0;
+    cudaMemPool_t pool;
+    if (cudaGetDevice(&dev) == cudaSuccess && cudaDeviceGetDefaultMemPool(&pool, dev) == cudaSuccess) {
+      unsigned long long keep = ~0ull;
+      cudaMemPoolSetAttribute(pool, cudaMemPoolAttrReleaseThreshold, &keep);
+    }
+    cudaGetLastError();
+    return true;
+  }();
+  (void)poolKept;
   void* p = nullptr;
-  cudaError_t e = cudaMalloc(&p, bytes);
+  cudaError_t e = cudaMallocAsync(&p, bytes, 0);
   if (e != cudaSuccess) {
     cudaGetLastError();
     throw DeviceError("GPU out of memory allocating " + std::to_string(bytes) + " bytes (" +
@@ -94,7 +109,7 @@ void* allocate(std::size_t bytes) {
   }
   return p;
 }
-void release(void* p) noexcept { cudaFree(p); }
+void release(void* p) noexcept { cudaFreeAsync(p, 0); }
 
 void copy(void* dst, const void* src, std::size_t bytes, int kind) {
   cudaMemcpyKind k = kind == 0 ? cudaMemcpyHostToDevice : kind == 1 ? cudaMemcpyDeviceToHost : cudaMemcpyDeviceToDevice;

@@ -80,7 +80,6 @@ void* deviceAllocate(Device d, std::size_t bytes) {
 
 void deviceFree(Device d, void* p) noexcept {
   if (!p) return;
-  countHostWait();
   forget(d, p);
   if (d == Device::Cuda) cuda::release(p);
   else std::free(p);

@@ -24,8 +24,9 @@ Device resolveDevice(const std::string& request);
 void synchronize(Device d);
 
 // How many times the host has waited for the device so far: synchronize,
-// copies to or from host memory, freed device memory (cudaFree waits), and
-// the primitives that return a value (reductions, exclusiveScan). Counted on
+// copies to or from host memory, and the primitives that return a value
+// (reductions, exclusiveScan). Device memory is allocated and freed in
+// stream order (no wait: CudaBackend.cu). Counted on
 // both devices, so that a CPU test can check that a step never waits
 // (Simulation::step between maintenance steps; Doc/design.md).
 unsigned long long hostWaits();

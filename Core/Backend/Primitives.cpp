@@ -54,9 +54,8 @@ float reduceMin(Device d, const float* x, int n) {
   return chunkedReduce<float>(n, 3.0e38f, minChunk, x, [](float a, float b) { return std::min(a, b); });
 }
 
-int exclusiveScan(Device d, const int* in, int* out, int n) {
-  countHostWait();
-  if (d == Device::Cuda) return cuda::exclusiveScan(in, out, n);
+namespace {
+int exclusiveScanCpu(const int* in, int* out, int n) {
   int total = 0;
   for (int i = 0; i < n; ++i) {
     int v = in[i];
@@ -65,10 +64,17 @@ int exclusiveScan(Device d, const int* in, int* out, int n) {
   }
   return total;
 }
+}  // namespace
+
+int exclusiveScan(Device d, const int* in, int* out, int n) {
+  countHostWait();
+  if (d == Device::Cuda) return cuda::exclusiveScan(in, out, n);
+  return exclusiveScanCpu(in, out, n);
+}
 
 void exclusiveScanAsync(Device d, const int* in, int* out, int n) {
   if (d == Device::Cuda) return cuda::exclusiveScanAsync(in, out, n);
-  exclusiveScan(d, in, out, n);
+  exclusiveScanCpu(in, out, n);
 }
 
 void sortPairs(Device d, std::uint32_t* keys, std::uint32_t* values, int n, int keyBits) {

@@ -19,6 +19,8 @@ class FluidSolver {
   // The neighbour lists' buffer (FluidNeighbours::capacity), for checkpoints.
   int neighbourListCapacity() const { return neighbours_.capacity(); }
   void setNeighbourListCapacity(int entries) { neighbours_.setCapacity(entries); }
+  // Particles of the last solve that had no list (a download; for tests).
+  int particlesWithoutNeighbourList() const { return neighbours_.particlesWithoutList(); }
   explicit FluidSolver(Device device);
   // Rest-lattice constants (the relaxation's reference denominator).
   void configure(const WaterSettings& water);

@@ -13,7 +13,9 @@
 // scenes), then N steps are timed twice: once as a plain run (wall time over
 // N steps, device synchronised at the end) and once with per-stage profiling
 // (device synchronised after each stage, so the stages add up to a little
-// more than the plain time).
+// more than the plain time). "waits/step": the times the host waited for
+// the device (hostWaits()) per plain step, the final synchronisation not
+// counted: only maintenance steps wait (Simulation.h), one in 16.
 #include <omp.h>
 
 #include <chrono>
@@ -51,6 +53,7 @@ struct Result {
   int water = 0, cloth = 0;
   double totalMs = 0, profiledMs = 0, wettingMs = 0;
   double bytesPerParticle = 0;
+  double waitsPerStep = 0;  // host waits for the device (hostWaits()) per plain step
   std::vector<StageRow> stages;
 };
 
@@ -163,17 +166,18 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
 
   Result r;
   r.c = c;
-  // Particle counts are known on the host (drips and drains change them):
-  // the table gives their mean over the timed steps.
+  // Water counts stay on the device (drips and drains change them): the
+  // table gives the mean of the counts before and after the timed steps.
   const int cloth = sim.cloth.empty() ? 0 : sim.cloth.vertexCount();
-  double waterSum = 0.0;
+  const double waterBefore = sim.collectStats().get("water_particles");
+  synchronize(device);
+  const unsigned long long waitsBefore = hostWaits();
   const double t0 = nowMs();
-  for (int s = 0; s < steps; ++s) {
-    sim.step(false);
-    waterSum += sim.particles.count() - cloth;
-  }
+  for (int s = 0; s < steps; ++s) sim.step(false);
   synchronize(device);
   r.totalMs = (nowMs() - t0) / steps;
+  r.waitsPerStep = double(hostWaits() - waitsBefore - 1) / steps;
+  const double waterAfter = sim.collectStats().get("water_particles");
 
   sim.pipeline.resetTimings();
   for (int s = 0; s < steps; ++s) sim.step(true);
@@ -183,7 +187,7 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
     if (t.name.rfind("wet.", 0) == 0) r.wettingMs += t.meanMs();
   }
   r.cloth = cloth;
-  r.water = int(std::lround(waterSum / steps));
+  r.water = int(std::lround(0.5 * (waterBefore + waterAfter)));
   r.bytesPerParticle = double(deviceBytesInUse(device) - before) / double(std::max(1, sim.particles.count()));
   return r;
 }
@@ -199,14 +203,14 @@ void printTable(const std::vector<Result>& results, const std::string& deviceTex
   std::printf("\nsoak-bench on %s, %d timed steps per case after warm-up\n", deviceText.c_str(), steps);
   std::printf("wetting = sum of the wet.* stages (profiled); total = plain step wall time; paper = Table 2, GTX 690\n\n");
   std::printf("| scene | water | cloth | wetting ms | total ms | wetting share | steps/s | particle-steps/s | bytes/particle "
-              "| paper water | paper total ms | speed-up |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "| waits/step | paper water | paper total ms | speed-up |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Result& r : results) {
     const double n = r.water + r.cloth;
-    std::printf("| %s | %s | %s | %.3f | %.3f | %.1f %% | %.0f | %.3g | %.0f |", r.c.name.c_str(),
+    std::printf("| %s | %s | %s | %.3f | %.3f | %.1f %% | %.0f | %.3g | %.0f | %.2f |", r.c.name.c_str(),
                 countText(r.water).c_str(), countText(r.cloth).c_str(), r.wettingMs, r.totalMs,
                 r.profiledMs > 0 ? 100.0 * r.wettingMs / r.profiledMs : 0.0, 1000.0 / r.totalMs,
-                n * 1000.0 / r.totalMs, r.bytesPerParticle);
+                n * 1000.0 / r.totalMs, r.bytesPerParticle, r.waitsPerStep);
     if (r.c.paperTotalMs > 0)
       std::printf(" %s | %.1f | %.1fx |\n", countText(r.c.paperWater).c_str(), r.c.paperTotalMs,
                   r.c.paperTotalMs / r.totalMs);
@@ -248,7 +252,7 @@ void writeJson(const std::string& file, const std::vector<Result>& results, cons
       << ", \"wetting_ms\": " << r.wettingMs << ", \"total_ms\": " << r.totalMs
       << ", \"profiled_total_ms\": " << r.profiledMs << ", \"steps_per_s\": " << 1000.0 / r.totalMs
       << ", \"particle_steps_per_s\": " << (r.water + r.cloth) * 1000.0 / r.totalMs
-      << ", \"bytes_per_particle\": " << r.bytesPerParticle;
+      << ", \"bytes_per_particle\": " << r.bytesPerParticle << ", \"host_waits_per_step\": " << r.waitsPerStep;
     if (r.c.paperTotalMs > 0)
       o << ", \"paper_total_ms\": " << r.c.paperTotalMs << ", \"paper_wetting_ms\": " << r.c.paperWettingMs
         << ", \"speedup\": " << r.c.paperTotalMs / r.totalMs;
