@@ -59,7 +59,7 @@ inline int lanesFor(int n, int minLanes = 1) {
 
 #if defined(__CUDACC__)
 template <class F>
-__global__ void soakForEachLanesKernel(int n, int shift, F f) {
+__device__ __forceinline__ void soakRunLanes(int n, int shift, F& f) {
   const long long t = static_cast<long long>(blockIdx.x) * blockDim.x + threadIdx.x;
   const int i = static_cast<int>(t >> shift);
   if (i >= n) return;  // the whole group: i is the same for its lanes
@@ -69,9 +69,22 @@ __global__ void soakForEachLanesKernel(int n, int shift, F f) {
   l.mask = l.size == 32 ? 0xffffffffu : ((1u << l.size) - 1u) << ((threadIdx.x & 31u) & ~unsigned(l.size - 1));
   f(i, l);
 }
+template <class F>
+__global__ void soakForEachLanesKernel(int n, int shift, F f) {
+  soakRunLanes(n, shift, f);
+}
+// The same with at least minBlocks blocks resident per SM (registers capped
+// to fit, __launch_bounds__).
+template <int minBlocks, class F>
+__global__ void __launch_bounds__(kForEachBlockSize, minBlocks) soakForEachLanesKernelBounded(int n, int shift, F f) {
+  soakRunLanes(n, shift, f);
+}
 #endif
 
-template <class F>
+// minBlocksPerSm > 0: ask the compiler to fit that many blocks of
+// kForEachBlockSize threads on an SM (for passes whose registers would
+// otherwise cost occupancy; Doc/performance.md).
+template <int minBlocksPerSm = 0, class F>
 void forEachLanes(Device device, int n, F f, const char* what = "forEachLanes", int minLanes = 1) {
   if (n <= 0) return;
   if (device == Device::Cuda) {
@@ -82,7 +95,10 @@ void forEachLanes(Device device, int n, F f, const char* what = "forEachLanes", 
     while ((1 << shift) < lanes) ++shift;
     const long long threads = static_cast<long long>(n) << shift;
     const int blocks = static_cast<int>((threads + kForEachBlockSize - 1) / kForEachBlockSize);
-    soakForEachLanesKernel<<<blocks, kForEachBlockSize>>>(n, shift, f);
+    if constexpr (minBlocksPerSm > 0)
+      soakForEachLanesKernelBounded<minBlocksPerSm><<<blocks, kForEachBlockSize>>>(n, shift, f);
+    else
+      soakForEachLanesKernel<<<blocks, kForEachBlockSize>>>(n, shift, f);
     checkLastLaunch(device, what);
 #else
     (void)f;

@@ -75,6 +75,11 @@ constexpr float kFluidOther = 0.f, kFluidWater = 1.f, kFluidCloth = 2.f;
 // group reads a list's consecutive entries together, which paid even at 1M
 // particles on the H100 (fluid.solve 14.0 ms with one lane, 12.1 with four).
 constexpr int kListLanes = 4;
+// Blocks of 256 threads the two list passes keep resident per SM: 5 caps
+// them at 48 registers (40 warps). The grid walk for particles without a
+// list (FluidNeighbours.h) had raised them from 46-47 to 54, which fits only
+// 4 blocks (32 warps).
+constexpr int kFluidPassBlocks = 5;
 
 struct CorrectionConstants {
   float rho0, m0, corrK, corrQ, moveScale;
@@ -92,7 +97,7 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
   const int colliderCount = k.colliderCount;
   const WallDensityTable wall = *k.wall;
     // Position corrections of water particles and of the cloth they touch.
-  forEachLanes(d, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
+  forEachLanes<kFluidPassBlocks>(d, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
     const int phi = p.phase[i];
     const Float4 xi4 = p.predicted[i];
     Vec3 dx(0.f, 0.f, 0.f);
@@ -178,7 +183,7 @@ void FluidSolver::solve(Simulation& sim) {
   }, "fluid.attributes");
   for (int it = 0; it < ws.iterations; ++it) {
     // Lambda of every water particle (Eq. 6-7 and the mass-weighted PBD step).
-    forEachLanes(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
+    forEachLanes<kFluidPassBlocks>(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
       if (!isWater(p.phase[i])) {
         if (lanes.leader()) lam[i] = 0.f;
         return;

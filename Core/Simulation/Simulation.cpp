@@ -153,10 +153,32 @@ double Simulation::pendingDrainedMass() {
   return sum;
 }
 
+namespace {
+// Up to this many colliders travel to the device inside a kernel's
+// parameters (4 KiB at most), not by a copy that waits.
+constexpr int kCollidersByParameter = 16;
+struct ColliderParameters {
+  Collider c[kCollidersByParameter];
+};
+void writeByParameters(Device d, const std::vector<Collider>& colliders, Collider* out) {
+  const int n = int(colliders.size());
+  ColliderParameters set;
+  for (int k = 0; k < n; ++k) set.c[k] = colliders[std::size_t(k)];
+  forEach(d, n, SOAK_LAMBDA(int k) { out[k] = set.c[k]; }, "colliders.write");
+}
+}  // namespace
+
+void Simulation::writeColliders() {
+  if (colliders.size() > std::size_t(kCollidersByParameter) || colliderBuffer_.size() != colliders.size())
+    colliderBuffer_.upload(colliders);  // the first time, or too many: a copy
+  else
+    writeByParameters(device_, colliders, colliderBuffer_.data());
+}
+
 void Simulation::step(bool profile) {
   for (auto& m : modules_) m->beforeStep(*this);
   if (collidersDirty_) {
-    colliderBuffer_.upload(colliders);
+    writeColliders();
     collidersDirty_ = false;
   }
   if (checkStages) {

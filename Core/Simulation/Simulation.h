@@ -117,6 +117,8 @@ class Simulation {
 
  private:
   void addCoreStages();
+  // Moved colliders to the device: by a kernel's parameters (no wait).
+  void writeColliders();
   Device device_;
   Buffer<Vec3> contactDelta_;
   Buffer<float> instabilityScratch_;

@@ -13,8 +13,8 @@ using namespace soak;
 
 namespace {
 
-// A saturated sheet that drips into a sink, a jet that wets it, and water
-// that falls past it into the sink.
+// A saturated sheet that drips into a sink, a jet that wets it, water that
+// falls past it into the sink, and a ball that moves along a path.
 std::unique_ptr<Simulation> dripScene(test::TestRegistry& reg) {
   return test::makeSimulation(
       "<Scene><Simulation timeStep='0.005' domainMin='-2 -1 -2' domainMax='2 3 2'/>"
@@ -22,6 +22,7 @@ std::unique_ptr<Simulation> dripScene(test::TestRegistry& reg) {
       "pinCorners='u0v0 u1v0'/>"
       "<Nozzle position='0 0.8 0.3' direction='0 0 -1' radius='0.03' speed='3'/>"
       "<Sink min='-2 -1 -2' max='2 0.45 2'/>"
+      "<Sphere center='0.8 0.8 0' radius='0.1' path='0 0 0 0; 2 0 0.5 0'/>"
       "<WetCloth initialSaturation='0.4'/></Scene>",
       Device::Cpu, reg);
 }
