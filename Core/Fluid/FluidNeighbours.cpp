@@ -35,33 +35,57 @@ void FluidNeighbours::build(ParticleView p, GridView g, float skin, bool sizeExa
     forEachFluidCandidate(p, g, i, reach, [&](int) { ++c; });
     count[i] = c;
   }, "fluid.neighbours.count");
+  if (overflow_.size() == 0) {
+    overflow_.resize(1);
+    overflow_.fillZero();
+  }
   if (sizeExactly) {
     const int total = exclusiveScan(device_, count, start_.data(), n);
-    // Room for 1/8 more than now, so that a growing list does not double the
-    // buffer (Buffer::resize grows geometrically); the old contents are not needed.
-    const std::size_t entries = std::size_t(total > 0 ? total : 1);
-    if (entries > index_.capacity()) {
-      index_ = Buffer<int>(device_);
-      index_.reserve(entries + entries / 8);
+    // Particles went without a list since the last sizing: the pairs grow
+    // faster than the headroom, so double it (up to as many again as now).
+    if (overflow_.download()[0] != 0) {
+      headroomEighths_ = headroomEighths_ < 8 ? 2 * headroomEighths_ : 8;
+      overflow_.fillZero();
     }
-    index_.resize(index_.capacity());
+    // Room for more than now (1/8 at first), so that lists growing until the
+    // next sizing still fit; the old contents are not needed.
+    const std::size_t entries = std::size_t(total > 0 ? total : 1);
+    if (entries > index_.size()) {
+      index_ = Buffer<int>(device_);
+      index_.resize(entries + entries * std::size_t(headroomEighths_) / 8);
+    }
   } else {
     exclusiveScanAsync(device_, count, start_.data(), n);
   }
   const int capacity = int(index_.size());
   const int* start = start_.data();
   int* index = index_.data();
+  int* overflow = overflow_.data();
   forEach(device_, n, SOAK_LAMBDA(int i) {
     int k = start[i];
-    if (k + count[i] > capacity) return;  // no room: the passes query the grid (FluidNeighbours.h)
+    if (k + count[i] > capacity) {  // no room: the passes query the grid (FluidNeighbours.h)
+      *overflow = 1;
+      return;
+    }
     forEachFluidCandidate(p, g, i, reach, [&](int j) { index[k++] = j; });
   }, "fluid.neighbours.fill");
   view_ = {start, count, index, capacity, p.phase, p.predicted, g};
 }
 
-void FluidNeighbours::setCapacity(int entries) {
+FluidListSizing FluidNeighbours::sizing() const {
+  FluidListSizing s;
+  s.capacity = int(index_.size());
+  s.headroomEighths = headroomEighths_;
+  s.overflowed = overflow_.size() > 0 && overflow_.download()[0] != 0;
+  return s;
+}
+
+void FluidNeighbours::setSizing(const FluidListSizing& s) {
   index_ = Buffer<int>(device_);
-  index_.resize(std::size_t(entries > 0 ? entries : 0));
+  index_.resize(std::size_t(s.capacity > 0 ? s.capacity : 0));
+  headroomEighths_ = s.headroomEighths;
+  overflow_.resize(1);
+  overflow_.upload({s.overflowed ? 1 : 0});
 }
 
 int FluidNeighbours::particlesWithoutList() const {

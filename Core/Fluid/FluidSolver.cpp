@@ -156,7 +156,8 @@ void FluidSolver::solve(Simulation& sim) {
   if (p.count == 0) return;
   resize(p.count);
   // Pairs within (1 + skin) h, once per step (FluidNeighbours.h).
-  neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin, sim.maintenanceStep());
+  const bool sizeNow = sim.maintenanceStep() || (device_ == Device::Cpu && sizeListsEveryStepOnCpu);
+  neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin, sizeNow);
   const FluidNeighbourView g = neighbours_.view();
   const WaterSettings ws = sim.water;
   const float rho0 = ws.restDensity, m0 = ws.particleMass;

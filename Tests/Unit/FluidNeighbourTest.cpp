@@ -26,11 +26,17 @@ Outcome run(float skin, int steps, double listShare = 1.0, int* withoutList = nu
           "<Cloth origin='-0.2 0.25 -0.2' width='0.6' height='0.6' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1'/>"
           "<Box min='-0.2 0 -0.2' max='0.6 1 0.4' inside='true' friction='0'/></Scene>",
       Device::Cpu, reg);
-  if (listShare < 1.0) sim->maintenanceInterval = 1 << 30;
+  if (listShare < 1.0) {
+    sim->maintenanceInterval = 1 << 30;
+    sim->fluid.sizeListsEveryStepOnCpu = false;  // as on the GPU
+  }
   for (int s = 0; s < steps; ++s) {
     sim->step();
-    if (s == 0 && listShare < 1.0)
-      sim->fluid.setNeighbourListCapacity(int(listShare * sim->fluid.neighbourListCapacity()));
+    if (s == 0 && listShare < 1.0) {
+      FluidListSizing sizing = sim->fluid.neighbourListSizing();
+      sizing.capacity = int(listShare * sizing.capacity);
+      sim->fluid.setNeighbourListSizing(sizing);
+    }
   }
   if (withoutList) *withoutList = sim->fluid.particlesWithoutNeighbourList();
   const std::vector<Float4> x = sim->particles.downloadPositions();
@@ -85,6 +91,33 @@ TEST(FluidNeighbours, ParticlesPastTheListBufferQueryTheGridAndGetTheSameWater) 
   std::printf("lists cut to a third: %d of %zu particles without a list, %d differ\n", without, all.size(), diff);
   EXPECT_GT(without, int(all.size()) / 4);
   EXPECT_EQ(diff, 0);
+}
+
+TEST(FluidNeighbours, AParticleWithoutAListDoublesTheHeadroomAtTheNextSizing) {
+  // The GPU's sizing on the CPU: maintenance every 4th step. After the buffer
+  // is cut to a third, particles go without lists until step 4 resizes it
+  // with twice the headroom (2/8 of the pairs instead of 1/8).
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation("<Scene><WaterBlock min='0 0.3 0' max='0.16 0.6 0.16'/>"
+                                  "<Box min='-0.2 0 -0.2' max='0.6 1 0.4' inside='true'/></Scene>",
+                                  Device::Cpu, reg);
+  sim->maintenanceInterval = 4;
+  sim->fluid.sizeListsEveryStepOnCpu = false;
+  sim->step();
+  FluidListSizing first = sim->fluid.neighbourListSizing();
+  EXPECT_EQ(first.headroomEighths, 1);
+  FluidListSizing cut = first;
+  cut.capacity = first.capacity / 3;
+  sim->fluid.setNeighbourListSizing(cut);
+  sim->step();
+  EXPECT_TRUE(sim->fluid.neighbourListSizing().overflowed);
+  EXPECT_GT(sim->fluid.particlesWithoutNeighbourList(), 0);
+  for (int s = 2; s <= 4; ++s) sim->step();  // step 4 sizes
+  const FluidListSizing after = sim->fluid.neighbourListSizing();
+  EXPECT_EQ(after.headroomEighths, 2);
+  EXPECT_FALSE(after.overflowed);
+  EXPECT_EQ(sim->fluid.particlesWithoutNeighbourList(), 0);
+  EXPECT_GT(after.capacity, first.capacity);
 }
 
 TEST(FluidNeighbours, TheDefaultSkinChangesOnlyChaoticDetailNotTheWater) {
