@@ -144,15 +144,6 @@ void Simulation::compact() {
   if (particles.removeFlagged(flag) > 0 && !cloth.empty()) cloth.updateSlots(particles.view());
 }
 
-double Simulation::pendingDrainedMass() {
-  const std::vector<int> phase = particles.downloadPhases();
-  const std::vector<float> mass = particles.downloadMasses();
-  double sum = 0.0;
-  for (std::size_t i = 0; i < phase.size(); ++i)
-    if (isRemoved(phase[i])) sum += mass[i];
-  return sum;
-}
-
 namespace {
 // Up to this many colliders travel to the device inside a kernel's
 // parameters (4 KiB at most), not by a copy that waits.

@@ -51,9 +51,6 @@ class Simulation {
   // Drops the removed slots (drained mass into drainedWaterMass, in the
   // particles' order otherwise): the drain stage does it on maintenance steps.
   void compact();
-  // Mass in removed slots not yet compacted: drained, not yet counted in
-  // drainedWaterMass (a download; for stats and tests).
-  double pendingDrainedMass();
 
   // Counts and water budget for stats.csv (one reduction per call).
   StatsRow collectStats();
@@ -108,7 +105,7 @@ class Simulation {
   const Collider* deviceColliders() const { return colliderBuffer_.data(); }
 
   // Water mass removed by sinks or by leaving the domain (kg), as of the
-  // last compaction; add pendingDrainedMass() for the mass drained since.
+  // last compaction; collectStats() adds the removed slots not yet compacted.
   double drainedWaterMass = 0.0;
   // Water mass added by emitters after the start (kg).
   double emittedWaterMass = 0.0;

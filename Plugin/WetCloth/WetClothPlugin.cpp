@@ -203,7 +203,7 @@ class WetClothModule : public Module {
     DripCounters c = counters();
     int room = kMinDripRoom;
     while (room < 2 * c.largestStep && room < dripRoomCap_) room *= 2;
-    dripRoom_ = std::min(room, std::max(kMinDripRoom, dripRoomCap_));
+    dripRoom_ = std::min(room, dripRoomCap_);
     c.largestStep = 0;
     dripCounters_.upload({c});
   }
