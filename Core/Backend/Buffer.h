@@ -46,9 +46,13 @@ class Buffer {
     data_ = fresh;
     capacity_ = n;
   }
-  // Grows capacity geometrically so repeated appends stay cheap.
+  // Grows capacity geometrically (by a quarter) so repeated appends stay
+  // cheap. Not by doubling: per-slot buffers sized for a scene's first
+  // particles doubled on the first few slots past them (a drip room), and
+  // fig3b held 1.9 kB per particle instead of 1.4.
   void resize(std::size_t n) {
-    if (n > capacity_) reserve(n > 2 * capacity_ ? n : 2 * capacity_);
+    const std::size_t grown = capacity_ + capacity_ / 4;
+    if (n > capacity_) reserve(n > grown ? n : grown);
     size_ = n;
   }
   void clear() { size_ = 0; }
