@@ -79,8 +79,7 @@ int ParticleState::append(const std::vector<ParticleInit>& particles) {
     phase[i] = p.phase;
     id[i] = p.id;
   }
-  const int n = first + k;
-  forEachArray([&](auto& b) { b.resize(static_cast<std::size_t>(n)); });
+  appendSlots(k);
   position_.uploadAt(first, pos);
   predicted_.uploadAt(first, pos);
   velocity_.uploadAt(first, vel);
@@ -88,8 +87,6 @@ int ParticleState::append(const std::vector<ParticleInit>& particles) {
   radius_.uploadAt(first, radius);
   phase_.uploadAt(first, phase);
   id_.uploadAt(first, id);
-  for (Channel& c : channels_) fillBytes(device_, c.data.data() + first, 0, sizeof(float) * k);
-  count_ = n;
   return first;
 }
 
