@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "Backend/ForEach.h"
+#include "Base/Atomic.h"
 #include "Backend/Primitives.h"
 #include "Cloth/ConstraintColoring.h"
 
@@ -12,7 +13,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridRange_(device), dGridKey_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -220,10 +221,32 @@ void ClothSystem::buildGrid(GridView g) {
     if (k == 0 || bucketOfKey(g.slotKey[ordered[k - 1]], g.bucketMask) != b) range[b].start = std::uint32_t(k);
     if (k == n - 1 || bucketOfKey(g.slotKey[ordered[k + 1]], g.bucketMask) != b) range[b].end = std::uint32_t(k + 1);
   }, "cloth.grid");
+  // Near bits (GridView.h): each cell that holds cloth sets the bits of the
+  // 27 cells around it, once per run of its entries (a cell's entries are
+  // adjacent unless its bucket holds another cell too; then it sets them
+  // again, to the same effect).
+  dGridNear_.resize((buckets + 31) / 32);
+  dGridNear_.fillZero();
+  std::uint32_t* near = dGridNear_.data();
+  const std::uint32_t mask = g.bucketMask;
+  forEach(device_, n, SOAK_LAMBDA(int k) {
+    const std::uint32_t kk = key[k];
+    if (k > 0 && key[k - 1] == kk) return;
+    const int c[3] = {int(kk & 1023u), int((kk >> 10) & 1023u), int((kk >> 20) & 1023u)};
+    std::uint32_t spread[3][3];
+    spreadAround(c, spread);
+    for (int dz = 0; dz < 3; ++dz)
+      for (int dy = 0; dy < 3; ++dy)
+        for (int dx = 0; dx < 3; ++dx) {
+          const std::uint32_t b = (spread[0][dx] | spread[1][dy] | spread[2][dz]) & mask;
+          atomicSetBits(&near[b >> 5], 1u << (b & 31u));
+        }
+  }, "cloth.grid.near");
   clothGrid_ = g;
   clothGrid_.range = range;
   clothGrid_.cellKey = key;
   clothGrid_.slot = ordered;
+  clothGrid_.nearBits = near;
 }
 
 void ClothSystem::resetMultipliers() {

@@ -177,6 +177,7 @@ class ClothSystem {
   bool anyTethers_ = false;  // some vertex has a tether (set by upload())
   Buffer<BucketRange> dGridRange_;  // the cloth grid: per bucket
   Buffer<std::uint32_t> dGridKey_;  // the cloth grid: per vertex
+  Buffer<std::uint32_t> dGridNear_;  // the cloth grid: near bits, one per bucket
   GridView clothGrid_;
   Buffer<float> scratch_;
 };

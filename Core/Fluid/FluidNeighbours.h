@@ -15,6 +15,7 @@
 #include "Backend/Buffer.h"
 #include "Base/HostDevice.h"
 #include "Neighbours/GridView.h"
+#include "Neighbours/PairLists.h"
 #include "Particles/ParticleState.h"
 
 namespace soak {
@@ -79,36 +80,27 @@ SOAK_INLINE void forEachListedNeighbour(const FluidNeighbourView& n, int i, cons
   }
 }
 
-// What decides which particles get a list: kept by checkpoints, so that a
-// resumed run gives the same bits as an uninterrupted one.
-struct FluidListSizing {
-  int capacity = 0;         // entries the index buffer holds
-  int headroomEighths = 1;  // room made beyond the pairs counted when sizing
-  bool overflowed = false;  // a particle went without a list since the last sizing
-};
+// The fluid's lists use PairLists' sizing (kept by checkpoints).
+using FluidListSizing = PairListSizing;
 
 class FluidNeighbours {
  public:
-  explicit FluidNeighbours(Device d) : start_(d), count_(d), index_(d), overflow_(d), device_(d) {}
+  explicit FluidNeighbours(Device d) : lists_(d), device_(d) {}
   // Builds the lists from the predicted positions (after the grid build),
   // keeping pairs within (1 + skin) h_ij (Water.neighbourSkin). With
-  // `sizeExactly` (a maintenance step) it reads the total back and makes
-  // room for all of them and a headroom (1/8, doubled whenever a particle
-  // went without a list since the last sizing, up to 1); otherwise nothing
-  // waits for the device and lists past the buffer's capacity are left out
-  // (the passes query the grid).
+  // `sizeExactly` (a maintenance step) the buffer is sized to hold them all
+  // and a headroom; otherwise nothing waits for the device and lists past
+  // the buffer's capacity are left out (the passes query the grid).
   void build(ParticleView p, GridView g, float skin, bool sizeExactly);
   FluidNeighbourView view() const { return view_; }
   // The index buffer's size and headroom (a download).
-  FluidListSizing sizing() const;
-  void setSizing(const FluidListSizing& s);
+  FluidListSizing sizing() const { return lists_.sizing(); }
+  void setSizing(const FluidListSizing& s) { lists_.setSizing(s); }
   // Particles of the last build without a list (a download; for tests).
-  int particlesWithoutList() const;
+  int particlesWithoutList() const { return lists_.itemsWithoutList(); }
 
  private:
-  Buffer<int> start_, count_, index_;
-  Buffer<int> overflow_;  // 1 once a particle went without a list
-  int headroomEighths_ = 1;
+  PairLists lists_;
   FluidNeighbourView view_;
   Device device_;
 };

@@ -40,6 +40,12 @@ struct GridView {
   const std::uint32_t* cellKey = nullptr;  // per entry (for the full grid: per particle slot)
   const std::uint32_t* slotKey = nullptr;  // per particle slot: its cell key (query centres)
   const int* slot = nullptr;               // per entry: its particle slot; null: the entry is the slot
+  // Optional (a subset's grid, Cloth/ClothGrid): one bit per bucket, set for
+  // the bucket of every cell within one cell (the 27 around) of a cell that
+  // holds an entry. A clear bit for cell c's bucket proves that none of the
+  // 27 cells around c holds an entry, so a query there can stop at once
+  // (hash collisions only set more bits). Null: every query walks its cells.
+  const std::uint32_t* nearBits = nullptr;
 };
 
 SOAK_INLINE int slotOfEntry(const GridView& g, std::uint32_t j) {
@@ -78,6 +84,12 @@ SOAK_INLINE std::uint32_t spreadBits3(std::uint32_t v) {
 SOAK_INLINE std::uint32_t bucketOfKey(std::uint32_t key, std::uint32_t bucketMask) {
   std::uint32_t morton = spreadBits3(key) | (spreadBits3(key >> 10) << 1) | (spreadBits3(key >> 20) << 2);
   return morton & bucketMask;
+}
+
+// Whether some entry may lie in the 27 cells around the cell of bucket b
+// (always true for a grid without nearBits).
+SOAK_INLINE bool mayHoldNear(const GridView& g, std::uint32_t b) {
+  return !g.nearBits || ((g.nearBits[b >> 5] >> (b & 31u)) & 1u);
 }
 
 // Calls f(j) for the slots j of the cell with key `key` that are this
@@ -119,6 +131,7 @@ SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, co
   const int c[3] = {int(centerKey & 1023u), int((centerKey >> 10) & 1023u), int((centerKey >> 20) & 1023u)};
   std::uint32_t spread[3][3];
   spreadAround(c, spread);
+  if (!mayHoldNear(g, (spread[0][1] | spread[1][1] | spread[2][1]) & g.bucketMask)) return;
   for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
@@ -173,6 +186,22 @@ SOAK_INLINE void forEachCellWithin(const GridView& g, Vec3 x, float reach, F&& f
   }
 }
 
+// Whether some entry may lie in the cells a..b (per axis, inclusive): tests
+// the near bits of cells a+1, a+4, ... per axis, each of which covers
+// itself and the cells either side.
+SOAK_INLINE bool mayHoldInBox(const GridView& g, const int a[3], const int b[3]) {
+  if (!g.nearBits) return true;
+  for (int z = a[2] + 1; z - 1 <= b[2]; z += 3) {
+    const std::uint32_t sz = spreadAxis(z, 2);
+    for (int y = a[1] + 1; y - 1 <= b[1]; y += 3) {
+      const std::uint32_t syz = sz | spreadAxis(y, 1);
+      for (int x = a[0] + 1; x - 1 <= b[0]; x += 3)
+        if (mayHoldNear(g, (syz | spreadAxis(x, 0)) & g.bucketMask)) return true;
+    }
+  }
+  return false;
+}
+
 // Calls f(j) once for every slot j whose cell overlaps the box [lo, hi]
 // (at most kMaxBoxCells cells per axis, centred on the box, beyond that).
 // Cheaper than the 27 cells when the box is smaller than a cell, and it
@@ -190,6 +219,7 @@ SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, cons
       a[k] = mid - kMaxBoxCells / 2;
       b[k] = a[k] + kMaxBoxCells - 1;
     }
+  if (!mayHoldInBox(g, a, b)) return;
   for (int z = a[2]; z <= b[2]; ++z) {
     const std::uint32_t sz = spreadAxis(z, 2);
     for (int y = a[1]; y <= b[1]; ++y) {

@@ -1,0 +1,76 @@
+#include "Neighbours/PairLists.h"
+
+#include "Backend/Primitives.h"
+
+namespace soak {
+
+int* PairLists::countsFor(int n) {
+  items_ = n;
+  start_.resize(std::size_t(n));
+  count_.resize(std::size_t(n));
+  if (overflow_.size() == 0) {
+    overflow_.resize(1);
+    overflow_.fillZero();
+  }
+  return count_.data();
+}
+
+void PairLists::placeLists(bool sizeExactly) {
+  if (!sizeExactly) {
+    exclusiveScanAsync(device_, count_.data(), start_.data(), items_);
+    return;
+  }
+  const int total = exclusiveScan(device_, count_.data(), start_.data(), items_);
+  // Items went without a list since the last sizing: the pairs grow faster
+  // than the headroom, so double it (up to as many again as now).
+  if (overflow_.download()[0] != 0) {
+    headroomEighths_ = headroomEighths_ < 8 ? 2 * headroomEighths_ : 8;
+    overflow_.fillZero();
+  }
+  // Room for more than now (1/8 at first), so that lists growing until the
+  // next sizing still fit; the old contents are not needed.
+  const std::size_t entries = std::size_t(total > 0 ? total : 1);
+  if (entries > index_.size()) {
+    index_ = Buffer<int>(device_);
+    index_.resize(entries + entries * std::size_t(headroomEighths_) / 8);
+  }
+}
+
+PairLists::Fill PairLists::fill() {
+  return {start_.data(), count_.data(), index_.data(), int(index_.size()), overflow_.data()};
+}
+
+PairListView PairLists::view() const {
+  return {start_.data(), count_.data(), index_.data(), int(index_.size())};
+}
+
+PairListSizing PairLists::sizing() const {
+  PairListSizing s;
+  s.capacity = int(index_.size());
+  s.headroomEighths = headroomEighths_;
+  s.overflowed = overflow_.size() > 0 && overflow_.download()[0] != 0;
+  return s;
+}
+
+void PairLists::setSizing(const PairListSizing& s) {
+  index_ = Buffer<int>(device_);
+  index_.resize(std::size_t(s.capacity > 0 ? s.capacity : 0));
+  headroomEighths_ = s.headroomEighths;
+  overflow_.resize(1);
+  overflow_.upload({s.overflowed ? 1 : 0});
+}
+
+int PairLists::itemsWithoutList() const {
+  const std::vector<int> start = start_.download(), count = count_.download();
+  const int capacity = int(index_.size());
+  int without = 0;
+  for (std::size_t i = 0; i < start.size() && i < std::size_t(items_); ++i)
+    without += start[i] + count[i] > capacity ? 1 : 0;
+  return without;
+}
+
+std::size_t PairLists::bytes() const {
+  return (start_.size() + count_.size() + index_.size() + overflow_.size()) * sizeof(int);
+}
+
+}  // namespace soak

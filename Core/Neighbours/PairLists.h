@@ -1,0 +1,69 @@
+#pragma once
+// Neighbour lists built once per step from the grid (the fluid's and the
+// wet cloth's): for item i, the slots of its candidates that pass the
+// builder's test, in the grid's visiting order.
+//
+// The lists' buffer is sized from the host only on maintenance steps (a
+// read-back waits for the device); between them an item whose entries would
+// run past it gets no list, and its passes walk the grid instead (the same
+// candidates, in the same order, and more: a list of infinite reach). The
+// headroom left when sizing doubles, up to as many entries again, whenever
+// an item went without a list since the last sizing. The sizing decides
+// which items walk the grid, so checkpoints keep it (PairListSizing).
+#include "Backend/Buffer.h"
+#include "Base/HostDevice.h"
+
+namespace soak {
+
+struct PairListView {
+  const int* start = nullptr;  // first entry of item i
+  const int* count = nullptr;  // entries of item i
+  const int* index = nullptr;  // the listed slots
+  int capacity = 0;            // entries the index buffer holds
+  SOAK_INLINE bool listed(int i) const { return start[i] + count[i] <= capacity; }
+};
+
+// What decides which items get a list: kept by checkpoints, so that a
+// resumed run gives the same bits as an uninterrupted one.
+struct PairListSizing {
+  int capacity = 0;         // entries the index buffer holds
+  int headroomEighths = 1;  // room made beyond the pairs counted when sizing
+  bool overflowed = false;  // an item went without a list since the last sizing
+};
+
+class PairLists {
+ public:
+  explicit PairLists(Device d) : start_(d), count_(d), index_(d), overflow_(d), device_(d) {}
+
+  // Building (PairListsBuild.h does the three steps): per-item counts to be
+  // written for n items; then the offsets (with `sizeExactly`, a maintenance
+  // step, the total is read back and the buffer sized with headroom); then
+  // the fill's target.
+  int* countsFor(int n);
+  void placeLists(bool sizeExactly);
+  struct Fill {
+    const int* start;
+    const int* count;
+    int* index;
+    int capacity;
+    int* overflow;  // set to 1 by an item without room
+  };
+  Fill fill();
+
+  PairListView view() const;
+  // The index buffer's size and headroom (a download).
+  PairListSizing sizing() const;
+  void setSizing(const PairListSizing& s);
+  // Items of the last build without a list (a download; for tests).
+  int itemsWithoutList() const;
+  std::size_t bytes() const;
+
+ private:
+  Buffer<int> start_, count_, index_;
+  Buffer<int> overflow_;  // 1 once an item went without a list
+  int items_ = 0;
+  int headroomEighths_ = 1;
+  Device device_;
+};
+
+}  // namespace soak

@@ -1,0 +1,75 @@
+// The cloth's own grid (Cloth/ClothSystem.h): its near bits may stop a
+// query early, but only where the query would have found no cloth.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "Neighbours/GridView.h"
+#include "Support/TestScenes.h"
+
+using namespace soak;
+
+namespace {
+
+std::vector<int> candidates(const GridView& g, std::uint32_t key) {
+  std::vector<int> out;
+  forEachCandidate(g, key, [&](int j) { out.push_back(j); });
+  return out;
+}
+
+std::vector<int> candidatesInBox(const GridView& g, Vec3 lo, Vec3 hi) {
+  std::vector<int> out;
+  forEachCandidateInBox(g, lo, hi, [&](int j) { out.push_back(j); });
+  return out;
+}
+
+}  // namespace
+
+TEST(ClothGrid, NearBitsStopOnlyQueriesThatFindNoCloth) {
+  // A sheet with a tall block of water over it: the water's upper layers are
+  // many cells above the cloth, its lower ones touch it.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Cloth origin='-0.2 0.5 -0.2' width='0.4' height='0.4' cellsU='30' cellsV='30' "
+      "pinCorners='u0v0 u1v0 u0v1 u1v1'/><WaterBlock min='-0.1 0.52 -0.1' max='0.1 0.9 0.1'/></Scene>",
+      Device::Cpu, reg);
+  sim->step();
+  const GridView withBits = sim->cloth.grid();
+  ASSERT_NE(withBits.nearBits, nullptr);
+  GridView withoutBits = withBits;
+  withoutBits.nearBits = nullptr;
+  const ParticleView p = sim->particles.view();
+  int stopped = 0, queries = 0;
+  for (int i = 0; i < p.count; ++i) {
+    const std::vector<int> full = candidates(withoutBits, withBits.slotKey[i]);
+    EXPECT_EQ(candidates(withBits, withBits.slotKey[i]), full) << "slot " << i;
+    const std::uint32_t b = bucketOfKey(withBits.slotKey[i], withBits.bucketMask);
+    if (!mayHoldNear(withBits, b)) ++stopped;
+    ++queries;
+  }
+  // Boxes of every size up to the 8-cell limit and past it, anywhere around.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> where(-0.3f, 1.0f), size(0.f, 0.5f);
+  int boxesStopped = 0;
+  const int boxes = 4000;
+  for (int k = 0; k < boxes; ++k) {
+    const Vec3 lo(where(rng) * 0.5f - 0.1f, where(rng), where(rng) * 0.5f - 0.1f);
+    const Vec3 hi = lo + Vec3(size(rng), size(rng), size(rng));
+    const std::vector<int> full = candidatesInBox(withoutBits, lo, hi);
+    const std::vector<int> pruned = candidatesInBox(withBits, lo, hi);
+    EXPECT_EQ(pruned, full) << "box " << k;
+    if (pruned.empty() && full.empty()) {
+      int a[3] = {cellCoordinate(lo.x, withBits.invCellSize), cellCoordinate(lo.y, withBits.invCellSize),
+                  cellCoordinate(lo.z, withBits.invCellSize)};
+      int c[3] = {cellCoordinate(hi.x, withBits.invCellSize), cellCoordinate(hi.y, withBits.invCellSize),
+                  cellCoordinate(hi.z, withBits.invCellSize)};
+      if (!mayHoldInBox(withBits, a, c)) ++boxesStopped;
+    }
+  }
+  std::printf("near bits: %d of %d point queries and %d of %d boxes stopped at once\n", stopped, queries,
+              boxesStopped, boxes);
+  // The upper water is several cells from the cloth: a good share stops.
+  EXPECT_GT(stopped, queries / 4);
+  EXPECT_GT(boxesStopped, boxes / 10);
+}
