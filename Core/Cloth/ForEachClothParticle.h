@@ -38,4 +38,12 @@ void forEachClothParticleLanes(Device d, ClothSlots cloth, F f, const char* what
   forEachLanes(d, cloth.count, SOAK_LAMBDA(int v, Lanes lanes) { f(slot[v], lanes); }, what);
 }
 
+// The same with f(i, v, lanes): v is the particle's place among the cloth's
+// slots (the item of per-cloth-particle arrays such as ClothNeighbours').
+template <class F>
+void forEachClothItemLanes(Device d, ClothSlots cloth, F f, const char* what = "forEachClothItemLanes") {
+  const int* slot = cloth.slot;
+  forEachLanes(d, cloth.count, SOAK_LAMBDA(int v, Lanes lanes) { f(slot[v], v, lanes); }, what);
+}
+
 }  // namespace soak

@@ -156,8 +156,7 @@ void FluidSolver::solve(Simulation& sim) {
   if (p.count == 0) return;
   resize(p.count);
   // Pairs within (1 + skin) h, once per step (FluidNeighbours.h).
-  const bool sizeNow = sim.maintenanceStep() || (device_ == Device::Cpu && sizeListsEveryStepOnCpu);
-  neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin, sizeNow);
+  neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin, sim.sizeListsNow());
   const FluidNeighbourView g = neighbours_.view();
   const WaterSettings ws = sim.water;
   const float rho0 = ws.restDensity, m0 = ws.particleMass;

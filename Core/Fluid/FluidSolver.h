@@ -19,10 +19,6 @@ class FluidSolver {
   // The neighbour lists' sizing (FluidNeighbours.h), for checkpoints and tests.
   FluidListSizing neighbourListSizing() const { return neighbours_.sizing(); }
   void setNeighbourListSizing(const FluidListSizing& s) { neighbours_.setSizing(s); }
-  // On the CPU waiting for the device costs nothing: the lists are sized in
-  // every step, so no particle ever goes without one. Tests turn this off to
-  // see on the CPU what the GPU does (sizing on maintenance steps only).
-  bool sizeListsEveryStepOnCpu = true;
   // Particles of the last solve that had no list (a download; for tests).
   int particlesWithoutNeighbourList() const { return neighbours_.particlesWithoutList(); }
   explicit FluidSolver(Device device);

@@ -48,6 +48,12 @@ class Simulation {
   // device counters back (Module::beforeStep sees maintenanceStep()).
   int maintenanceInterval = 16;
   bool maintenanceStep() const;
+  // Whether neighbour lists (the fluid's, the wet cloth's) are sized this
+  // step: on maintenance steps, and on the CPU in every step, where waiting
+  // for the device costs nothing, so no particle goes without a list. Tests
+  // turn sizeListsEveryStepOnCpu off to see on the CPU what the GPU does.
+  bool sizeListsEveryStepOnCpu = true;
+  bool sizeListsNow() const { return maintenanceStep() || (device_ == Device::Cpu && sizeListsEveryStepOnCpu); }
   // Drops the removed slots (drained mass into drainedWaterMass, in the
   // particles' order otherwise): the drain stage does it on maintenance steps.
   void compact();

@@ -4,6 +4,7 @@
 // adds its columns to stats.csv.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "Backend/Primitives.h"
 #include "Base/Error.h"
@@ -45,6 +46,7 @@ class WetClothModule : public Module {
     dripSources_ = Buffer<DripSource>(sim.device());
     dripCounters_ = Buffer<DripCounters>(sim.device());
     dripCounters_.upload({DripCounters{}});
+    clothNeighbours_ = std::make_unique<ClothNeighbours>(sim.device());
     dripRoomCap_ = std::max(kMinDripRoom, sim.cloth.vertexCount() / 32);
     dryMass_.upload(dry);
     kappa_.upload(std::vector<float>(std::size_t(vertices), 1.f));
@@ -98,6 +100,10 @@ class WetClothModule : public Module {
     out.put<std::int64_t>(c.spawned);
     out.put<std::int64_t>(c.deferred);
     out.put<std::int32_t>(initialised_ ? 1 : 0);
+    const PairListSizing lists = clothNeighbours_->sizing();
+    out.put<std::int32_t>(lists.capacity);
+    out.put<std::int32_t>(lists.headroomEighths);
+    out.put<std::int32_t>(lists.overflowed ? 1 : 0);
   }
   void loadState(StateReader& in) override {
     const std::vector<DripSource> pending = in.getVector<DripSource>();
@@ -110,6 +116,13 @@ class WetClothModule : public Module {
     c.deferred = in.get<std::int64_t>();
     initialised_ = in.get<std::int32_t>() != 0;
     if (c.pending > takenRoom_ || dripRoom_ < 1) in.fail("drip bookkeeping out of range");
+    PairListSizing lists;
+    lists.capacity = in.get<std::int32_t>();
+    lists.headroomEighths = in.get<std::int32_t>();
+    lists.overflowed = in.get<std::int32_t>() != 0;
+    if (lists.capacity < 0 || lists.headroomEighths < 1 || lists.headroomEighths > 8)
+      in.fail("cloth neighbour list sizing out of range");
+    clothNeighbours_->setSizing(lists);
     dripSources_.upload(pending);
     dripCounters_.upload({c});
   }
@@ -148,10 +161,15 @@ class WetClothModule : public Module {
     a.dryMass = dryMass_.data();
     a.cloth = clothSlots(sim.cloth.view());
     a.clothGrid = sim.cloth.grid();
+    a.clothNeighbours = clothNeighbours_->view();
     return a;
   }
 
   void porosity(Simulation& s) {
+    // The cloth stays where its solve left it until wet.stick: the
+    // cloth-cloth lists of every wetting pass, built once here.
+    const ClothView c = s.cloth.view();
+    clothNeighbours_->build(s.particles.view(), s.cloth.grid(), clothSlots(c), c.thickness, s.sizeListsNow());
     if (!initialised_) {
       initialised_ = true;
       if (initialSaturation_ > 0.f) setInitialSaturation(s);
@@ -241,6 +259,7 @@ class WetClothModule : public Module {
   int dripRoom_ = kMinDripRoom;  // drips one step may take
   int dripRoomCap_ = kMinDripRoom;
   int takenRoom_ = 0;  // the room the last step took drips with: slots to append next step
+  std::unique_ptr<ClothNeighbours> clothNeighbours_;  // on the simulation's device (setup)
   bool initialised_ = false;
 };
 

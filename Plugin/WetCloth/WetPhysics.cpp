@@ -57,7 +57,7 @@ SOAK_INLINE float transferWeight(Vec3 xk, float hk, Vec3 xi, float hi, Vec3 g) {
 }  // namespace
 
 void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w) {
-  computeClothVolumes(d, p, a.clothGrid, a.cloth, a.volume);
+  computeClothVolumes(d, p, a.clothNeighbours, a.cloth, a.volume);
   const float sEW = w.sEW, c = w.c, sT = w.sT, sMax = w.sMax;
   const bool wetWeight = w.wetWeight;
   forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
@@ -182,11 +182,11 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
   for (int it = 0; it < w.diffusionIterations; ++it) {
     // alpha_i = kappa^s sum_j a_ij / (sum_j a_ij^2 + (sum_j a_ij)^2 + eps), so
     // that Eq. 17 reads S_i* = S_i + alpha_i sum_j a_ij (S_j - S_i).
-    forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+    forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
       const Vec3 xi = p.predicted[i].xyz();
       const float hi = p.radius[i];
       float sum = 0.f, sum2 = 0.f;
-      forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
+      forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
         if (j == i || p.phase[j] != p.phase[i]) return;
         const float aij = diffusionWeight(xi, hi, p.predicted[j].xyz(), p.radius[j], kD, etaD, rho0, gd);
         sum += aij;
@@ -201,11 +201,11 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
     }, "wet.diffuse.alpha");
     if (literal) {
       // Eq. 17 as written: each particle moves its own saturation (not conservative).
-      forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+      forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float C = 0.f;
-        forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
+        forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
           if (j == i || p.phase[j] != p.phase[i]) return;
           C += diffusionWeight(xi, hi, p.predicted[j].xyz(), p.radius[j], kD, etaD, rho0, gd) * (S[j] - S[i]);
         });
@@ -218,11 +218,11 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
       // Conservative form: the pair (receiver r, donor d) exchanges the mass
       // of the receiver's term of Eq. 17; the donor loses what the receiver
       // gains. A donor never gives more than it holds.
-      forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+      forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float out = 0.f;
-        forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
+        forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
           if (j == i || p.phase[j] != p.phase[i] || !(S[j] < S[i])) return;
           out += diffusionFlux(p.predicted[j].xyz(), p.radius[j], S[j], alpha[j], a.volume[j], xi, hi, S[i], kD, etaD,
                                rho0, gd, c);
@@ -230,11 +230,11 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         out = laneSum(lanes, out);
         if (lanes.leader()) limit[i] = out > a.held[i] ? a.held[i] / out : 1.f;
       }, "wet.diffuse.limit");
-      forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+      forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
         float change = 0.f;
-        forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
+        forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
           if (j == i || p.phase[j] != p.phase[i]) return;
           const Vec3 xj = p.predicted[j].xyz();
           if (S[j] > S[i])
@@ -262,7 +262,7 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   float* norm = a.scratchB;
   float* next = a.scratchC;
   const float* S = a.saturation;
-  forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+  forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
     if (lanes.leader()) {
       out[i] = 0.f;
       norm[i] = 0.f;
@@ -273,7 +273,7 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
     // Eq. 18, second condition: |sum_{j above i} V_j S_j cos(theta_ij) grad W_ij| < |beta g|.
     Vec3 pull(0.f, 0.f, 0.f);
     float below = 0.f;
-    forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
+    forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
       if (j == i || p.phase[j] != p.phase[i]) return;
       const Vec3 xj = p.predicted[j].xyz();
       const Vec3 xij = xi - xj;
@@ -294,11 +294,11 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   }, "wet.emit.decide");
   // Receivers below take cos(theta_ki) W_ki of the buffer, normalised so the
   // donor's whole buffer arrives (the paper's weights do not sum to one).
-  forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int k, Lanes lanes) {
+  forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int k, int v, Lanes lanes) {
     const Vec3 xk = p.predicted[k].xyz();
     const float hk = p.radius[k];
     float gain = 0.f;
-    forEachCandidate(a.clothGrid, g.slotKey[k], lanes, [&](int i) {
+    forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int i) {
       if (i == k || p.phase[i] != p.phase[k] || !(out[i] > 0.f)) return;
       gain += out[i] * transferWeight(xk, hk, p.predicted[i].xyz(), p.radius[i], gd) / norm[i];
     });
@@ -397,7 +397,7 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
   const float sT = w.sT, kAd = w.kappaAd, etaAd = w.etaAd >= 0.f ? w.etaAd : w.kappaAd * w.sT * w.sT;
   const float* S = a.saturation;
   Vec3* delta = a.delta;
-  forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+  forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
     const Float4 xi4 = p.predicted[i];
     if (xi4.w == 0.f) {
       if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
@@ -407,7 +407,7 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
     const Vec3 xi = xi4.xyz(), resti = c.restPosition[vi];
     const float thi = c.thickness[vi];
     Vec3 f(0.f, 0.f, 0.f);
-    forEachCandidate(a.clothGrid, g.slotKey[i], lanes, [&](int j) {
+    forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
       if (j == i || !isCloth(p.phase[j])) return;
       const int vj = p.id[j];
       const float reach = thi + c.thickness[vj];  // touching: within two half-thicknesses each side

@@ -1,6 +1,7 @@
 #pragma once
 // The wetting stages (paper Section 4, Algorithm 1 lines 11-25) as plain
 // functions over particle arrays: each runs on the CPU and on the GPU.
+#include "Cloth/ClothNeighbours.h"
 #include "Cloth/ClothSystem.h"
 #include "Cloth/ForEachClothParticle.h"
 #include "Neighbours/GridView.h"
@@ -27,6 +28,9 @@ struct WetArrays {
   const float* dryMass = nullptr;
   ClothSlots cloth;  // the cloth particles' slots: the cloth-side passes walk these only
   GridView clothGrid;  // the grid over the cloth particles alone: queries for cloth neighbours use it
+  // Cloth-cloth lists of this step (Cloth/ClothNeighbours.h): the passes from
+  // the porosity update to sticking walk them instead of clothGrid.
+  ClothNeighbourView clothNeighbours;
 };
 
 // The water particle the model was set up with (m0, h0) and gravity.

@@ -1,10 +1,14 @@
 // The cloth's own grid (Cloth/ClothSystem.h): its near bits may stop a
-// query early, but only where the query would have found no cloth.
+// query early, but only where the query would have found no cloth; and the
+// cloth-cloth lists built from it (Cloth/ClothNeighbours.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
+#include "Cloth/ClothNeighbours.h"
+#include "Cloth/ClothVolume.h"
 #include "Neighbours/GridView.h"
 #include "Support/TestScenes.h"
 
@@ -72,4 +76,66 @@ TEST(ClothGrid, NearBitsStopOnlyQueriesThatFindNoCloth) {
   // The upper water is several cells from the cloth: a good share stops.
   EXPECT_GT(stopped, queries / 4);
   EXPECT_GT(boxesStopped, boxes / 10);
+}
+
+TEST(ClothNeighbours, ListsHoldTheGridsPairsInItsOrderAndGiveTheSameVolumes) {
+  // A sheet falling onto a sphere and folding: pairs change from step to step.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Cloth origin='-0.2 0.6 -0.2' width='0.4' height='0.4' cellsU='24' cellsV='24'/>"
+      "<Sphere center='0 0.3 0' radius='0.1'/></Scene>",
+      Device::Cpu, reg);
+  for (int s = 0; s < 40; ++s) sim->step();
+  const ParticleView p = sim->particles.view();
+  const ClothView c = sim->cloth.view();
+  const ClothSlots cloth = clothSlots(c);
+  const GridView g = sim->cloth.grid();
+  ClothNeighbours lists(Device::Cpu);
+  lists.build(p, g, cloth, c.thickness, true);
+  ASSERT_EQ(lists.itemsWithoutList(), 0);
+  // Every item's list: every grid candidate within reach, none much beyond,
+  // in the grid's order (a subsequence of the grid's candidates).
+  long long listed = 0, candidates = 0;
+  for (int v = 0; v < cloth.count; ++v) {
+    const int i = cloth.slot[v];
+    std::vector<int> fromList, within, order;
+    forEachClothNeighbour(lists.view(), v, Lanes{}, [&](int j) { fromList.push_back(j); });
+    forEachCandidate(g, g.slotKey[i], [&](int j) {
+      ++candidates;
+      order.push_back(j);
+      const float reach = std::max(0.5f * (p.radius[i] + p.radius[j]), c.thickness[p.id[i]] + c.thickness[p.id[j]]);
+      const float r2 = lengthSquared(p.predicted[i].xyz() - p.predicted[j].xyz());
+      if (r2 < reach * reach) within.push_back(j);
+      const bool isListed = std::find(fromList.begin(), fromList.end(), j) != fromList.end();
+      if (isListed) EXPECT_LT(r2, 1.001f * reach * reach) << "cloth particle " << v << " lists " << j;
+    });
+    std::size_t next = 0;
+    for (int j : fromList) {  // grid order kept
+      while (next < order.size() && order[next] != j) ++next;
+      ASSERT_LT(next, order.size()) << "cloth particle " << v << ": " << j << " out of the grid's order";
+      ++next;
+    }
+    for (int j : within)
+      EXPECT_NE(std::find(fromList.begin(), fromList.end(), j), fromList.end()) << "cloth particle " << v << " misses " << j;
+    listed += long(fromList.size());
+  }
+  std::printf("cloth lists: %.1f entries per cloth particle, %.1f grid candidates\n", double(listed) / cloth.count,
+              double(candidates) / cloth.count);
+  EXPECT_LT(listed * 2, candidates);  // the lists are what saves the passes their work
+  // Volumes over the lists, over the grid, and over lists with no room (every
+  // item walks the grid): the same bits.
+  const int n = p.count;
+  std::vector<float> viaLists(n, -1.f), viaGrid(n, -1.f), viaFallback(n, -1.f);
+  computeClothVolumes(Device::Cpu, p, lists.view(), cloth, viaLists.data());
+  computeClothVolumes(Device::Cpu, p, g, cloth, viaGrid.data());
+  lists.setSizing(PairListSizing{});
+  lists.build(p, g, cloth, c.thickness, false);
+  EXPECT_EQ(lists.itemsWithoutList(), cloth.count);
+  computeClothVolumes(Device::Cpu, p, lists.view(), cloth, viaFallback.data());
+  for (int v = 0; v < cloth.count; ++v) {
+    const int i = cloth.slot[v];
+    EXPECT_GT(viaGrid[i], 0.f);
+    EXPECT_EQ(viaLists[i], viaGrid[i]) << "cloth particle " << v;
+    EXPECT_EQ(viaFallback[i], viaGrid[i]) << "cloth particle " << v;
+  }
 }

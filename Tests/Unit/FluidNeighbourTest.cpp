@@ -28,7 +28,7 @@ Outcome run(float skin, int steps, double listShare = 1.0, int* withoutList = nu
       Device::Cpu, reg);
   if (listShare < 1.0) {
     sim->maintenanceInterval = 1 << 30;
-    sim->fluid.sizeListsEveryStepOnCpu = false;  // as on the GPU
+    sim->sizeListsEveryStepOnCpu = false;  // as on the GPU
   }
   for (int s = 0; s < steps; ++s) {
     sim->step();
@@ -102,7 +102,7 @@ TEST(FluidNeighbours, AParticleWithoutAListDoublesTheHeadroomAtTheNextSizing) {
                                   "<Box min='-0.2 0 -0.2' max='0.6 1 0.4' inside='true'/></Scene>",
                                   Device::Cpu, reg);
   sim->maintenanceInterval = 4;
-  sim->fluid.sizeListsEveryStepOnCpu = false;
+  sim->sizeListsEveryStepOnCpu = false;
   sim->step();
   FluidListSizing first = sim->fluid.neighbourListSizing();
   EXPECT_EQ(first.headroomEighths, 1);

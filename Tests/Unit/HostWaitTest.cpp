@@ -32,7 +32,7 @@ std::unique_ptr<Simulation> dripScene(test::TestRegistry& reg) {
 TEST(HostWaits, AStepWaitsForTheDeviceOnlyOnMaintenanceSteps) {
   test::TestRegistry reg(SOAK_PLUGIN_DIR);
   auto sim = dripScene(reg);
-  sim->fluid.sizeListsEveryStepOnCpu = false;  // as on the GPU
+  sim->sizeListsEveryStepOnCpu = false;  // as on the GPU
   int maintenanceWaits = 0, otherWaits = 0, maintenanceSteps = 0, otherSteps = 0;
   for (int s = 0; s < 200; ++s) {
     const bool maintenance = sim->maintenanceStep();
