@@ -44,6 +44,37 @@ SOAK_INLINE Vec3 laneSum(const Lanes& l, Vec3 v) {
   return Vec3(laneSum(l, v.x), laneSum(l, v.y), laneSum(l, v.z));
 }
 
+// The group's votes as bits, lane k's vote in bit k (one lane: b).
+SOAK_INLINE unsigned laneBallot(const Lanes& l, bool b) {
+#if defined(__CUDA_ARCH__)
+  return (__ballot_sync(l.mask, b) & l.mask) >> (__ffs(l.mask) - 1);
+#else
+  (void)l;
+  return b ? 1u : 0u;
+#endif
+}
+
+// Votes of the lanes before this one (for ranking what a round keeps).
+SOAK_INLINE int lanesBefore(const Lanes& l, unsigned votes) {
+#if defined(__CUDA_ARCH__)
+  return __popc(votes & ((1u << l.index) - 1u));
+#else
+  (void)l;
+  (void)votes;
+  return 0;
+#endif
+}
+
+SOAK_INLINE int voteCount(unsigned votes) {
+#if defined(__CUDA_ARCH__)
+  return __popc(votes);
+#else
+  int c = 0;
+  for (; votes; votes &= votes - 1u) ++c;
+  return c;
+#endif
+}
+
 // Whether any lane of the group passes true.
 SOAK_INLINE bool laneAny(const Lanes& l, bool b) {
 #if defined(__CUDA_ARCH__)

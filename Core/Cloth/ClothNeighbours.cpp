@@ -15,20 +15,25 @@ struct ClothCandidates {
   const int* slot;
   const float* thickness;
   template <class F>
-  SOAK_INLINE void operator()(int v, F&& f) const {
+  SOAK_INLINE void operator()(int v, const Lanes& lanes, F&& f) const {
     const int i = slot[v];
     const Vec3 xi = p.predicted[i].xyz();
     const float hi = p.radius[i], thi = thickness[p.id[i]];
-    forEachCandidate(g, g.slotKey[i], [&](int j) {
-      const float reach = 1.0001f * maxf(pairSupport(hi, p.radius[j]), thi + thickness[p.id[j]]);
-      if (lengthSquared(xi - p.predicted[j].xyz()) < reach * reach) f(j);
+    forEachCandidateInRounds(g, g.slotKey[i], lanes, [&](bool valid, int j) {
+      bool keep = valid;
+      if (keep) {
+        const float reach = 1.0001f * maxf(pairSupport(hi, p.radius[j]), thi + thickness[p.id[j]]);
+        keep = lengthSquared(xi - p.predicted[j].xyz()) < reach * reach;
+      }
+      f(keep, j);
     });
   }
 };
 }  // namespace
 
-void ClothNeighbours::build(ParticleView p, GridView g, ClothSlots cloth, const float* thickness, bool sizeExactly) {
-  buildPairLists(device_, lists_, cloth.count, sizeExactly, ClothCandidates{p, g, cloth.slot, thickness},
+void ClothNeighbours::build(ParticleView p, GridView g, ClothSlots cloth, const float* thickness, bool sizeExactly,
+                            bool lanes) {
+  buildPairLists(device_, lists_, cloth.count, sizeExactly, ClothCandidates{p, g, cloth.slot, thickness}, lanes,
                  "cloth.neighbours.count", "cloth.neighbours.fill");
   view_ = {lists_.view(), g, cloth.slot};
 }

@@ -46,11 +46,15 @@ class ClothNeighbours {
   // From the predicted positions, over the cloth grid `g` (valid since the
   // neighbours stage); `thickness` per vertex. With `sizeExactly` (a
   // maintenance step) the buffer is sized for all lists (PairLists.h).
-  void build(ParticleView p, GridView g, ClothSlots cloth, const float* thickness, bool sizeExactly);
+  // `lanes`: a group of GPU lanes per item (false: one thread, as a
+  // reference for tests; the lists are the same).
+  void build(ParticleView p, GridView g, ClothSlots cloth, const float* thickness, bool sizeExactly,
+             bool lanes = true);
   ClothNeighbourView view() const { return view_; }
   PairListSizing sizing() const { return lists_.sizing(); }
   void setSizing(const PairListSizing& s) { lists_.setSizing(s); }
   int itemsWithoutList() const { return lists_.itemsWithoutList(); }
+  std::vector<std::vector<int>> download() const { return lists_.download(); }
 
  private:
   PairLists lists_;

@@ -13,24 +13,28 @@ struct FluidCandidates {
   GridView g;
   float reach;
   template <class F>
-  SOAK_INLINE void operator()(int i, F&& f) const {
+  SOAK_INLINE void operator()(int i, const Lanes& lanes, F&& f) const {
     const int phi = p.phase[i];
     const Float4 xi4 = p.predicted[i];
     const bool moving = xi4.w > 0.f;
     if (!isWater(phi) && !(isCloth(phi) && moving)) return;
     const Vec3 xi = xi4.xyz();
     const float hi = p.radius[i];
-    forEachCandidate(g, g.slotKey[i], [&](int j) {
-      if (!fluidPairKind(phi, moving, p.phase[j])) return;
-      const float h = pairSupport(hi, p.radius[j]) * reach;
-      if (lengthSquared(xi - p.predicted[j].xyz()) < h * h) f(j);
+    forEachCandidateInRounds(g, g.slotKey[i], lanes, [&](bool valid, int j) {
+      bool keep = valid && fluidPairKind(phi, moving, p.phase[j]);
+      if (keep) {
+        const float h = pairSupport(hi, p.radius[j]) * reach;
+        keep = lengthSquared(xi - p.predicted[j].xyz()) < h * h;
+      }
+      f(keep, j);
     });
   }
 };
 }  // namespace
 
 void FluidNeighbours::build(ParticleView p, GridView g, float skin, bool sizeExactly) {
-  buildPairLists(device_, lists_, p.count, sizeExactly, FluidCandidates{p, g, 1.f + skin}, "fluid.neighbours.count",
+  buildPairLists(device_, lists_, p.count, sizeExactly, FluidCandidates{p, g, 1.f + skin}, false,
+                 "fluid.neighbours.count",
                  "fluid.neighbours.fill");
   const PairListView l = lists_.view();
   view_ = {l.start, l.count, l.index, l.capacity, p.phase, p.predicted, g};

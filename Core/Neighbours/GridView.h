@@ -143,6 +143,32 @@ SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, co
   }
 }
 
+// The same in rounds, for passes that must keep the grid's order with
+// several lanes (building lists): in each round the group's lanes take
+// adjacent entries of a cell's bucket, and every lane calls f(valid, j) in
+// every round, valid telling whether it holds a candidate j of the cell.
+// All lanes of a group make the same calls, so f may vote (laneBallot).
+template <class F>
+SOAK_INLINE void forEachCandidateInRounds(const GridView& g, std::uint32_t centerKey, const Lanes& lanes, F&& f) {
+  const int c[3] = {int(centerKey & 1023u), int((centerKey >> 10) & 1023u), int((centerKey >> 20) & 1023u)};
+  std::uint32_t spread[3][3];
+  spreadAround(c, spread);
+  if (!mayHoldNear(g, (spread[0][1] | spread[1][1] | spread[2][1]) & g.bucketMask)) return;
+  for (int dz = -1; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::uint32_t key = packCellKey(c[0] + dx, c[1] + dy, c[2] + dz);
+        const BucketRange r = g.range[(spread[0][dx + 1] | spread[1][dy + 1] | spread[2][dz + 1]) & g.bucketMask];
+        for (std::uint32_t base = r.start; base < r.end; base += std::uint32_t(lanes.size)) {
+          const std::uint32_t k = base + std::uint32_t(lanes.index);
+          const bool valid = k < r.end && g.cellKey[k] == key;
+          f(valid, valid ? slotOfEntry(g, k) : -1);
+        }
+      }
+    }
+  }
+}
+
 template <class F>
 SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, F&& f) {
   forEachCandidate(g, centerKey, Lanes{}, f);

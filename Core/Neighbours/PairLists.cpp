@@ -69,6 +69,15 @@ int PairLists::itemsWithoutList() const {
   return without;
 }
 
+std::vector<std::vector<int>> PairLists::download() const {
+  const std::vector<int> start = start_.download(), count = count_.download(), index = index_.download();
+  std::vector<std::vector<int>> lists(static_cast<std::size_t>(items_));
+  for (std::size_t i = 0; i < lists.size(); ++i)
+    if (start[i] + count[i] <= int(index.size()))
+      lists[i].assign(index.begin() + start[i], index.begin() + start[i] + count[i]);
+  return lists;
+}
+
 std::size_t PairLists::bytes() const {
   return (start_.size() + count_.size() + index_.size() + overflow_.size()) * sizeof(int);
 }

@@ -10,6 +10,8 @@
 // headroom left when sizing doubles, up to as many entries again, whenever
 // an item went without a list since the last sizing. The sizing decides
 // which items walk the grid, so checkpoints keep it (PairListSizing).
+#include <vector>
+
 #include "Backend/Buffer.h"
 #include "Base/HostDevice.h"
 
@@ -56,6 +58,9 @@ class PairLists {
   void setSizing(const PairListSizing& s);
   // Items of the last build without a list (a download; for tests).
   int itemsWithoutList() const;
+  // The lists as the host sees them (downloads; for tests): item i's
+  // entries, or none without a list.
+  std::vector<std::vector<int>> download() const;
   std::size_t bytes() const;
 
  private:

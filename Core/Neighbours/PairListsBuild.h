@@ -1,33 +1,68 @@
 #pragma once
 // buildPairLists: counts, places and fills PairLists (PairLists.h) from a
-// candidate walk. `candidates` is a copyable functor with
-// `template <class F> void operator()(int i, F&& f) const` calling f(j) for
-// every slot j that belongs in item i's list, in the order the passes would
-// visit them; it runs twice (count, fill) and must list the same both times.
+// candidate walk in rounds. `candidates` is a copyable functor with
+// `template <class F> void operator()(int i, const Lanes& lanes, F&& f) const`
+// that walks item i's candidates in the grid's order, in rounds as
+// forEachCandidateInRounds does, calling f(keep, j) in every round on every
+// lane: keep tells whether the lane's candidate j belongs in the list. It
+// runs twice (count, fill) and must decide the same both times. The fill
+// ranks each round's kept candidates by lane (a ballot), so the list keeps
+// the grid's order whatever the group's width.
+//
+// With `lanes` the builder gives each item a group of lanes (Base/Lanes.h):
+// the cloth's lists (14.4k items in the paper scenes, one thread each left
+// most of the GPU idle). The fluid's lists keep one thread per item: the
+// ballot variant did not pay there (Doc/performance.md).
 #include "Backend/ForEach.h"
 #include "Neighbours/PairLists.h"
 
 namespace soak {
 
+namespace detail {
 template <class Candidates>
-void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, const char* countName,
-                    const char* fillName) {
-  int* count = lists.countsFor(n);
-  forEach(d, n, SOAK_LAMBDA(int i) {
+struct CountPairs {
+  Candidates candidates;
+  int* count;
+  SOAK_INLINE void operator()(int i, const Lanes& lanes) const {
     int c = 0;
-    candidates(i, [&](int) { ++c; });
-    count[i] = c;
-  }, countName);
-  lists.placeLists(sizeExactly);
-  const PairLists::Fill t = lists.fill();
-  forEach(d, n, SOAK_LAMBDA(int i) {
+    candidates(i, lanes, [&](bool keep, int) { c += keep ? 1 : 0; });
+    c = laneSum(lanes, c);
+    if (lanes.leader()) count[i] = c;
+  }
+};
+template <class Candidates>
+struct FillPairs {
+  Candidates candidates;
+  PairLists::Fill t;
+  SOAK_INLINE void operator()(int i, const Lanes& lanes) const {
     int k = t.start[i];
     if (k + t.count[i] > t.capacity) {  // no room: the passes walk the grid
-      *t.overflow = 1;
+      if (lanes.leader()) *t.overflow = 1;
       return;
     }
-    candidates(i, [&](int j) { t.index[k++] = j; });
-  }, fillName);
+    candidates(i, lanes, [&](bool keep, int j) {
+      const unsigned votes = laneBallot(lanes, keep);
+      if (keep) t.index[k + lanesBefore(lanes, votes)] = j;
+      k += voteCount(votes);
+    });
+  }
+};
+}  // namespace detail
+
+template <class Candidates>
+void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, bool lanes,
+                    const char* countName, const char* fillName) {
+  const detail::CountPairs<Candidates> count{candidates, lists.countsFor(n)};
+  if (lanes)
+    forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { count(i, l); }, countName);
+  else
+    forEach(d, n, SOAK_LAMBDA(int i) { count(i, Lanes{}); }, countName);
+  lists.placeLists(sizeExactly);
+  const detail::FillPairs<Candidates> fill{candidates, lists.fill()};
+  if (lanes)
+    forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { fill(i, l); }, fillName);
+  else
+    forEach(d, n, SOAK_LAMBDA(int i) { fill(i, Lanes{}); }, fillName);
 }
 
 }  // namespace soak

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "Backend/ForEach.h"
+#include "Cloth/ClothNeighbours.h"
 #include "LaneSums.h"
 #include "Support/TestScenes.h"
 
@@ -42,4 +43,32 @@ TEST(GpuLanes, ListSumsMatchOneThreadPerItem) {
     EXPECT_GT(withAny, 0);
     EXPECT_LT(withAny, n);
   }
+}
+
+TEST(GpuLanes, ClothListsBuiltWithLaneGroupsKeepTheGridsOrder) {
+  SOAK_SKIP_WITHOUT_GPU();
+  // Lists built by groups of lanes rank each round's kept candidates with a
+  // ballot: they must be the lists one thread per item builds, entry for entry.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Cloth origin='-0.2 0.6 -0.2' width='0.4' height='0.4' cellsU='40' cellsV='40'/>"
+      "<Sphere center='0 0.3 0' radius='0.1'/></Scene>",
+      Device::Cuda, reg);
+  for (int s = 0; s < 40; ++s) sim->step();
+  const ParticleView p = sim->particles.view();
+  const ClothView c = sim->cloth.view();
+  ClothNeighbours grouped(Device::Cuda), single(Device::Cuda);
+  grouped.build(p, sim->cloth.grid(), clothSlots(c), c.thickness, true, true);
+  single.build(p, sim->cloth.grid(), clothSlots(c), c.thickness, true, false);
+  const auto a = grouped.download(), b = single.download();
+  ASSERT_EQ(a.size(), std::size_t(c.vertexCount));
+  ASSERT_EQ(a.size(), b.size());
+  std::size_t entries = 0;
+  for (std::size_t v = 0; v < a.size(); ++v) {
+    EXPECT_EQ(a[v], b[v]) << "cloth particle " << v;
+    entries += b[v].size();
+  }
+  std::printf("%d cloth particles, %d lanes, %.1f entries each\n", c.vertexCount, lanesFor(c.vertexCount),
+              double(entries) / double(a.size()));
+  EXPECT_GT(entries, 20 * a.size());
 }
