@@ -44,9 +44,11 @@ SOAK_INLINE Vec3 laneSum(const Lanes& l, Vec3 v) {
   return Vec3(laneSum(l, v.x), laneSum(l, v.y), laneSum(l, v.z));
 }
 
-// The group's votes as bits, lane k's vote in bit k (one lane: b).
+// The group's votes as bits, lane k's vote in bit k (one lane: b, without
+// a warp vote: a thread of forEach holds Lanes{}, whose mask is not its own).
 SOAK_INLINE unsigned laneBallot(const Lanes& l, bool b) {
 #if defined(__CUDA_ARCH__)
+  if (l.size == 1) return b ? 1u : 0u;
   return (__ballot_sync(l.mask, b) & l.mask) >> (__ffs(l.mask) - 1);
 #else
   (void)l;
@@ -78,6 +80,7 @@ SOAK_INLINE int voteCount(unsigned votes) {
 // Whether any lane of the group passes true.
 SOAK_INLINE bool laneAny(const Lanes& l, bool b) {
 #if defined(__CUDA_ARCH__)
+  if (l.size == 1) return b;
   return __any_sync(l.mask, b) != 0;
 #else
   (void)l;
