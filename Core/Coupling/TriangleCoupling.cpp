@@ -14,12 +14,14 @@ void snapshotTriangles(Device d, ParticleView p, ClothView c) {
 }
 
 void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
-                            int passes) {
+                            int passes, int* movedFlag) {
   if (c.triangleCount == 0) return;
   snapshotTriangles(d, p, c);  // the passes move water only
   for (int pass = 0; pass < passes; ++pass) {
+    const bool first = pass == 0;
     forEachLanes(d, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
       if (!isWater(p.phase[i])) return;
+      if (!first && !movedFlag[i]) return;  // uncorrected last pass: uncorrected again
       const Vec3 x0 = p.position[i].xyz();
       const Vec3 start = p.predicted[i].xyz();
       // Every cell the path and the triangles around it can touch: a fast
@@ -39,7 +41,11 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
         forEachTriangleNearPath(g, p, c, x0, start, lanes, [&](int k, int) {
           if (!due) due = !isZero(correction(k, start));
         });
-        if (!laneAny(lanes, due) || !lanes.leader()) return;
+        if (!laneAny(lanes, due)) {
+          if (lanes.leader()) movedFlag[i] = 0;
+          return;
+        }
+        if (!lanes.leader()) return;
       }
       Vec3 x = start;
       bool moved = false;
@@ -56,6 +62,7 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
         moved = true;
       });
       if (moved) p.predicted[i] = Float4(x, p.predicted[i].w);
+      movedFlag[i] = moved ? 1 : 0;
     }, "coupling.triangles");
   }
 }

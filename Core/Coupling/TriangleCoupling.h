@@ -143,7 +143,12 @@ void snapshotTriangles(Device d, ParticleView p, ClothView c);
 // null for 1) gives kappa_couple of a triangle as the mean of its vertices
 // (Eq. 22 is this mean); the correction is scaled by Eq. 5 for `passes`.
 // `g` is any grid that holds the cloth particles (the cloth's own is fastest).
+// `movedFlag` is scratch of p.count ints: after the first pass only the water a
+// pass moved is taken again. The passes move water only, so a particle no
+// triangle corrected sees the same triangles from the same place in the
+// next pass, and again nothing would correct it (the same bits as taking
+// it again).
 void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
-                            int passes);
+                            int passes, int* movedFlag);
 
 }  // namespace soak

@@ -15,7 +15,7 @@ namespace soak {
 Simulation::Simulation(Device device)
     : particles(device), grid(device), cloth(device), fluid(device), device_(device), contactDelta_(device),
       instabilityScratch_(device), substepStart_(device), substepVelocity_(device), velocityFix_(device),
-      removeFlag_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
+      removeFlag_(device), couplingMoved_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
 Simulation::~Simulation() = default;
 
@@ -87,8 +87,9 @@ void Simulation::addCoreStages() {
                    }});
   pipeline.append({"coupling", [](Simulation& s) {
                      if (s.cloth.empty()) return;
+                     s.couplingMoved_.resize(std::size_t(s.particles.count()));
                      projectWaterOutOfCloth(s.device(), s.particles.view(), s.cloth.grid(), s.cloth.view(),
-                                            s.couplingStiffness, s.couplingPasses);
+                                            s.couplingStiffness, s.couplingPasses, s.couplingMoved_.data());
                    }});
   pipeline.append({"finalize", [](Simulation& s) {
                      const bool substeps = s.settings.clothSubsteps > 1 && !s.cloth.empty();

@@ -128,6 +128,7 @@ class Simulation {
   Buffer<Float4> substepStart_;  // cloth sub-steps
   Buffer<Vec3> substepVelocity_, velocityFix_;
   Buffer<int> removeFlag_;
+  Buffer<int> couplingMoved_;  // scratch of the coupling passes
   Buffer<float> removedMass_;
   Buffer<Vec3> sinkBuffer_;
   std::vector<std::unique_ptr<Module>> modules_;
