@@ -105,6 +105,7 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
       const Vec3 xi = xi4.xyz();
       const Float4 ai = attr[i];
       const float hi = ai.x, mui = ai.y, li = lam[i];
+      const float liOverMui = li / mui;
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         if (j == i) return;
         const Float4 aj = attr[j];
@@ -116,11 +117,11 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
         const float muj = aj.y;
         if (aj.w == kFluidWater) {
           // Artificial pressure s_corr = -k (W(r) / W(dq))^4 against clumping.
-          float ratio = poly6(r2, h) / poly6(corrQ * corrQ * h * h, h);
-          float scorr = -corrK * ratio * ratio * ratio * ratio;
-          dx += gr * (li * muj / mui + lam[j] + scorr * muj);
+          const float ratio = poly6Ratio(r2, h, corrQ);
+          const float scorr = -corrK * ratio * ratio * ratio * ratio;
+          dx += gr * (liOverMui * muj + lam[j] + scorr * muj);
         } else {
-          dx += gr * (li * aj.z / mui);
+          dx += gr * (liOverMui * aj.z);
         }
       });
       dx = laneSum(lanes, dx);

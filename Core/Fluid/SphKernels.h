@@ -30,4 +30,12 @@ SOAK_INLINE Vec3 spikyGradient(Vec3 xij, float r, float h) {
   return xij * (-45.f / (kPi * h3 * h3) * d * d / r);
 }
 
+// W(r, h) / W(q h, h) for Poly6, r < h: ((h^2 - r^2) / (h^2 (1 - q^2)))^3,
+// the normalisation cancelled (one division instead of three).
+SOAK_INLINE float poly6Ratio(float r2, float h, float q) {
+  const float h2 = h * h;
+  const float ratio = (h2 - r2) / (h2 * (1.f - q * q));
+  return ratio * ratio * ratio;
+}
+
 }  // namespace soak
