@@ -96,6 +96,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
   const Vec3 gd = ref.gravityDir;
   float* scale = a.scratchA;
   float* ratio = a.scratchB;
+  float* asked = a.scratchC;
   // Cloth: what each cloth particle may take from each water neighbour,
   // a_ij = kappa^a (1 + eta^a cos theta_ij) (S^MAX - S_i) V_i / c (Eq. 11, in
   // kg), scaled down if the sum over its neighbours would overfill it.
@@ -120,7 +121,8 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     const float demand = kA * cap * factors;
     scale[i] = demand > cap ? cap / factors : kA * cap;
   }, "wet.absorb.demand");
-  // Water: if the cloth around wants more than the particle has, every share shrinks alike.
+  // Water: if the cloth around wants more than the particle has, every share
+  // shrinks alike (ratio); what the cloth asks of the particle is kept.
   forEachLanes(d, p.count, SOAK_LAMBDA(int j, Lanes lanes) {
     if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) {
       if (lanes.leader()) ratio[j] = 0.f;
@@ -128,13 +130,15 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     }
     const Vec3 xj = p.predicted[j].xyz();
     const float hj = p.radius[j];
-    float asked = 0.f;
+    float sum = 0.f;
     forEachCandidate(a.clothGrid, g.slotKey[j], lanes, [&](int i) {
       if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
-      asked += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd);
+      sum += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd);
     });
-    asked = laneSum(lanes, asked);
-    if (lanes.leader()) ratio[j] = asked > p.mass[j] ? p.mass[j] / asked : 1.f;
+    sum = laneSum(lanes, sum);
+    if (!lanes.leader()) return;
+    asked[j] = sum;
+    ratio[j] = sum > p.mass[j] ? p.mass[j] / sum : 1.f;
   }, "wet.absorb.ratio");
   forEachClothParticleLanes(d, a.cloth, SOAK_LAMBDA(int i, Lanes lanes) {
     if (scale[i] <= 0.f) return;
@@ -148,17 +152,13 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     gained = laneSum(lanes, gained);
     if (lanes.leader()) a.held[i] += gained;
   }, "wet.absorb.cloth");
-  forEachLanes(d, p.count, SOAK_LAMBDA(int j, Lanes lanes) {
+  // Water gives ratio_j times what was asked of it: the sum over its cloth
+  // neighbours of the shares the cloth took above (ratio_j is the same in
+  // every term), without walking them again.
+  forEach(d, p.count, SOAK_LAMBDA(int j) {
     if (!isWater(p.phase[j]) || p.mass[j] <= 0.f) return;
-    const Vec3 xj = p.predicted[j].xyz();
-    const float hj = p.radius[j];
-    float given = 0.f;
-    forEachCandidate(a.clothGrid, g.slotKey[j], lanes, [&](int i) {
-      if (!isCloth(p.phase[i]) || scale[i] <= 0.f) return;
-      given += scale[i] * absorptionFactor(p.predicted[i].xyz(), p.radius[i], xj, hj, etaA, gd) * ratio[j];
-    });
-    given = laneSum(lanes, given);
-    if (!lanes.leader() || given <= 0.f) return;
+    const float given = asked[j] * ratio[j];
+    if (given <= 0.f) return;
     const float m = ratio[j] < 1.f ? 0.f : maxf(p.mass[j] - given, 0.f);
     p.mass[j] = m;
     if (m > 0.f) {
