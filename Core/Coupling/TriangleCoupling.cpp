@@ -14,7 +14,7 @@ void snapshotTriangles(Device d, ParticleView p, ClothView c) {
 }
 
 void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
-                            int passes, int* movedFlag) {
+                            int passes, int* movedFlag, int minLanes) {
   if (c.triangleCount == 0) return;
   snapshotTriangles(d, p, c);  // the passes move water only
   for (int pass = 0; pass < passes; ++pass) {
@@ -63,7 +63,7 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
       });
       if (moved) p.predicted[i] = Float4(x, p.predicted[i].w);
       movedFlag[i] = moved ? 1 : 0;
-    }, "coupling.triangles");
+    }, "coupling.triangles", minLanes);
   }
 }
 

@@ -149,6 +149,6 @@ void snapshotTriangles(Device d, ParticleView p, ClothView c);
 // next pass, and again nothing would correct it (the same bits as taking
 // it again).
 void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
-                            int passes, int* movedFlag);
+                            int passes, int* movedFlag, int minLanes = 1);
 
 }  // namespace soak

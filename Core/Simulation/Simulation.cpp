@@ -89,7 +89,8 @@ void Simulation::addCoreStages() {
                      if (s.cloth.empty()) return;
                      s.couplingMoved_.resize(std::size_t(s.particles.count()));
                      projectWaterOutOfCloth(s.device(), s.particles.view(), s.cloth.grid(), s.cloth.view(),
-                                            s.couplingStiffness, s.couplingPasses, s.couplingMoved_.data());
+                                            s.couplingStiffness, s.couplingPasses, s.couplingMoved_.data(),
+                                            s.couplingMinLanes);
                    }});
   pipeline.append({"finalize", [](Simulation& s) {
                      const bool substeps = s.settings.clothSubsteps > 1 && !s.cloth.empty();

@@ -83,6 +83,10 @@ class Simulation {
   const float* couplingStiffness = nullptr;
   // Passes of the water-triangle constraint per step (n_s of Eq. 5 for it).
   int couplingPasses = 2;
+  // Fewest GPU lanes per water particle in the coupling passes (Base/Lanes.h;
+  // more are used where fewer than a million threads would run). A tuning
+  // knob for soak-bench's --coupling-lanes; Doc/performance.md has the sweep.
+  int couplingMinLanes = 1;
   // Passes of cloth contact (self and cloth-cloth) per step.
   int contactPasses = 2;
 
