@@ -86,7 +86,6 @@ struct CorrectionConstants {
   const Collider* colliders;
   int colliderCount;
   const WallDensityTable* wall;
-  KernelFactors common;  // kernelFactors(h0, corrQ)
 };
 
 // dx of every water particle and of the cloth particles it touches, from the
@@ -94,7 +93,6 @@ struct CorrectionConstants {
 void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, const float* lam, const Float4* attr,
                              Vec3* delta, CorrectionConstants k) {
   const float corrK = k.corrK, corrQ = k.corrQ, moveScale = k.moveScale, m0 = k.m0;
-  const KernelFactors common = k.common;
   const Collider* colliders = k.colliders;
   const int colliderCount = k.colliderCount;
   const WallDensityTable wall = *k.wall;
@@ -115,12 +113,11 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, aj.x);
         if (r2 >= h * h) return;
-        const KernelFactors kf = kernelFactorsFor(h, common, corrQ);
-        const Vec3 gr = spikyGradient(xij, sqrtf(r2), kf);
+        const Vec3 gr = spikyGradient(xij, sqrtf(r2), h);
         const float muj = aj.y;
         if (aj.w == kFluidWater) {
           // Artificial pressure s_corr = -k (W(r) / W(dq))^4 against clumping.
-          const float ratio = poly6Ratio(r2, kf);
+          const float ratio = poly6Ratio(r2, h, corrQ);
           const float scorr = -corrK * ratio * ratio * ratio * ratio;
           dx += gr * (liOverMui * muj + lam[j] + scorr * muj);
         } else {
@@ -144,7 +141,7 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, attr[j].x);
         if (r2 >= h * h) return;
-        dx += spikyGradient(xij, sqrtf(r2), kernelFactorsFor(h, common)) * lam[j];
+        dx += spikyGradient(xij, sqrtf(r2), h) * lam[j];
       });
       dx = laneSum(lanes, dx) * (moveScale * psi / mui);
     }
@@ -172,9 +169,7 @@ void FluidSolver::solve(Simulation& sim) {
   const Collider* colliders = sim.deviceColliders();
   const int colliderCount = int(sim.colliders.size());
   const WallDensityTable wall = wall_;
-  // The kernels' factors for pairs of the water's own h (most pairs).
-  const KernelFactors common = kernelFactors(ws.supportRadius, corrQ);
-  const CorrectionConstants k{rho0, m0, corrK, corrQ, 1.f / (rho0 * m0), colliders, colliderCount, &wall_, common};
+  const CorrectionConstants k{rho0, m0, corrK, corrQ, 1.f / (rho0 * m0), colliders, colliderCount, &wall_};
   float* lam = lambda_.data();
   float* rho = density_.data();
   const float* volume = volume_.data();
@@ -206,19 +201,18 @@ void FluidSolver::solve(Simulation& sim) {
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, aj.x);
         if (r2 >= h * h) return;
-        const KernelFactors kf = kernelFactorsFor(h, common);
         const float r = sqrtf(r2);
         const float muj = aj.y;
         if (aj.w == kFluidWater) {
-          dens += muj * poly6(r2, kf);
+          dens += muj * poly6(r2, h);
           if (j == i) return;
-          Vec3 gr = spikyGradient(xij, r, kf);
+          Vec3 gr = spikyGradient(xij, r, h);
           gradSelf += gr * muj;
           sumG2 += muj * lengthSquared(gr);
         } else {
           const float psi = aj.z;
-          dens += psi * poly6(r2, kf);
-          Vec3 gr = spikyGradient(xij, r, kf);
+          dens += psi * poly6(r2, h);
+          Vec3 gr = spikyGradient(xij, r, h);
           gradSelf += gr * psi;
           if (xj.w > 0.f) sumG2 += psi * psi / muj * lengthSquared(gr);
         }
@@ -271,7 +265,6 @@ void FluidSolver::applyViscosity(Simulation& sim) {
   GridView g = sim.grid.view();
   const float rho0 = ws.restDensity, c = ws.viscosity, vort = ws.vorticity;
   const float dt = float(sim.settings.timeStep);
-  const KernelFactors common = kernelFactors(ws.supportRadius);
   const float* rho = density_.data();
   Vec3* vnew = delta_.data();
   Vec3* omega = omega_.data();
@@ -290,9 +283,8 @@ void FluidSolver::applyViscosity(Simulation& sim) {
     forEachWaterNeighbour(g, p, i, lanes, [&](int j, Vec3 xij, float r2, float h) {
       const float vol = p.mass[j] / maxf(rho[j], 0.5f * rho0);
       const Vec3 vij = p.velocity[j] - vi;
-      const KernelFactors kf = kernelFactorsFor(h, common);
-      visc += vij * (vol * poly6(r2, kf));
-      w += cross(vij, spikyGradient(xij, sqrtf(r2), kf)) * (-vol);  // curl v (Macklin & Mueller, Eq. 15)
+      visc += vij * (vol * poly6(r2, h));
+      w += cross(vij, spikyGradient(xij, sqrtf(r2), h)) * (-vol);  // curl v (Macklin & Mueller, Eq. 15)
     });
     visc = laneSum(lanes, visc);
     w = laneSum(lanes, w);
@@ -307,7 +299,7 @@ void FluidSolver::applyViscosity(Simulation& sim) {
       Vec3 eta(0.f, 0.f, 0.f);
       forEachWaterNeighbour(g, p, i, lanes, [&](int j, Vec3 xij, float r2, float h) {
         const float vol = p.mass[j] / maxf(rho[j], 0.5f * rho0);
-        eta += spikyGradient(xij, sqrtf(r2), kernelFactorsFor(h, common)) * (vol * omegaNorm[j]);
+        eta += spikyGradient(xij, sqrtf(r2), h) * (vol * omegaNorm[j]);
       });
       eta = laneSum(lanes, eta);
       if (!lanes.leader()) return;
