@@ -260,7 +260,6 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   const float threshold = w.beta * ref.gravity;
   float* out = a.scratchA;
   float* norm = a.scratchB;
-  float* next = a.scratchC;
   const float* S = a.saturation;
   forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
     if (lanes.leader()) {
@@ -294,6 +293,8 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
   }, "wet.emit.decide");
   // Receivers below take cos(theta_ki) W_ki of the buffer, normalised so the
   // donor's whole buffer arrives (the paper's weights do not sum to one).
+  // A particle reads its neighbours' out and norm and only its own buffer,
+  // so it writes its new buffer in place.
   forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int k, int v, Lanes lanes) {
     const Vec3 xk = p.predicted[k].xyz();
     const float hk = p.radius[k];
@@ -303,34 +304,35 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
       gain += out[i] * transferWeight(xk, hk, p.predicted[i].xyz(), p.radius[i], gd) / norm[i];
     });
     gain = laneSum(lanes, gain);
-    if (lanes.leader()) next[k] = a.buffer[k] - out[k] + gain;
+    if (lanes.leader()) a.buffer[k] = a.buffer[k] - out[k] + gain;
   }, "wet.emit.transfer");
-  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-    a.buffer[i] = next[i];
-  }, "wet.emit.apply");
 }
 
 void takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int room, int* due, int* offsets,
                   DripSource* sources, DripCounters* counters) {
   const float mThr = w.mThreshold;
-  const int n = p.count;
+  // Over the cloth's slots, which are in increasing order: the first `room`
+  // due in slot order take their drips.
+  const int n = a.cloth.count;
   if (n == 0) return;
-  forEach(d, n, SOAK_LAMBDA(int i) {
-    due[i] = isCloth(p.phase[i]) && a.buffer[i] >= mThr ? 1 : 0;
+  const int* slot = a.cloth.slot;
+  forEach(d, n, SOAK_LAMBDA(int v) {
+    due[v] = a.buffer[slot[v]] >= mThr ? 1 : 0;
   }, "wet.emit.due");
   exclusiveScanAsync(d, due, offsets, n);
-  forEach(d, n, SOAK_LAMBDA(int i) {
-    if (!due[i] || offsets[i] >= room) return;
+  forEach(d, n, SOAK_LAMBDA(int v) {
+    if (v == 0) {  // the bookkeeping, once
+      const int wanted = offsets[n - 1] + due[n - 1], taken = wanted < room ? wanted : room;
+      counters->pending = taken;
+      if (wanted > counters->largestStep) counters->largestStep = wanted;
+      counters->spawned += taken;
+      counters->deferred += wanted - taken;
+    }
+    if (!due[v] || offsets[v] >= room) return;
+    const int i = slot[v];
     a.buffer[i] -= mThr;
-    sources[offsets[i]] = {p.predicted[i].xyz(), p.velocity[i]};
+    sources[offsets[v]] = {p.predicted[i].xyz(), p.velocity[i]};
   }, "wet.emit.take");
-  forEach(d, 1, SOAK_LAMBDA(int) {
-    const int wanted = offsets[n - 1] + due[n - 1], taken = wanted < room ? wanted : room;
-    counters->pending = taken;
-    if (wanted > counters->largestStep) counters->largestStep = wanted;
-    counters->spawned += taken;
-    counters->deferred += wanted - taken;
-  }, "wet.emit.count");
 }
 
 void placeDrips(Device d, ParticleView p, int first, int room, const DripSource* sources, const DripShape& shape,

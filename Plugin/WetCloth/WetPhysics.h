@@ -75,8 +75,8 @@ struct DripCounters {
 // Drips are due where a cloth buffer holds at least m_threshold. The first
 // `room` of them in slot order take m_threshold from their buffer and leave
 // their source in sources[0..pending); the others keep it and drip in a
-// later step. `due` and `offsets` are scratch of p.count ints. Nothing waits
-// for the device.
+// later step. `due` and `offsets` are scratch of at least as many ints as
+// there are cloth particles. Nothing waits for the device.
 void takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int room, int* due, int* offsets,
                   DripSource* sources, DripCounters* counters);
 
