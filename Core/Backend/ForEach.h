@@ -51,6 +51,12 @@ void forEach(Device device, int n, F f, const char* what = "forEach") {
 // 14.4k-vertex cloth 2-4x faster, 4 were best over the 250k-vertex cloth of
 // the 1M scale scene, and 1 for its coupling pass over all 1M particles
 // (Doc/performance.md has the sweep).
+// Lanes per item at least for the passes over neighbour lists (the fluid's,
+// the cloth's): a group reads a list's consecutive entries together, which
+// paid even at 1M particles on the H100 (fluid.solve 14.0 ms with one lane,
+// 12.1 with four).
+constexpr int kListLanes = 4;
+
 inline int lanesFor(int n, int minLanes = 1) {
   int lanes = minLanes;
   while (lanes < 16 && static_cast<long long>(n) * lanes < 1000000LL) lanes *= 2;

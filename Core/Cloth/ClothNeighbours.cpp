@@ -33,7 +33,7 @@ struct ClothCandidates {
 
 void ClothNeighbours::build(ParticleView p, GridView g, ClothSlots cloth, const float* thickness, bool sizeExactly,
                             bool lanes) {
-  buildPairLists(device_, lists_, cloth.count, sizeExactly, ClothCandidates{p, g, cloth.slot, thickness}, lanes,
+  buildPairLists(device_, lists_, cloth.count, sizeExactly, ClothCandidates{p, g, cloth.slot, thickness}, lanes ? kListLanes : 0,
                  "cloth.neighbours.count", "cloth.neighbours.fill");
   view_ = {lists_.view(), g, cloth.slot};
 }

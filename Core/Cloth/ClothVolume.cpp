@@ -22,7 +22,7 @@ struct ListWalk {
 };
 
 template <class Walk>
-void volumes(Device d, ParticleView p, Walk walk, ClothSlots cloth, float* volume) {
+void volumes(Device d, ParticleView p, Walk walk, ClothSlots cloth, float* volume, int minLanes) {
   forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
     const int phase = p.phase[i];
     const Vec3 xi = p.predicted[i].xyz();
@@ -34,16 +34,16 @@ void volumes(Device d, ParticleView p, Walk walk, ClothSlots cloth, float* volum
     });
     sum = laneSum(lanes, sum);
     if (lanes.leader()) volume[i] = sum > 0.f ? 1.f / sum : 0.f;
-  }, "cloth.volume");
+  }, "cloth.volume", minLanes);
 }
 }  // namespace
 
 void computeClothVolumes(Device d, ParticleView p, GridView g, ClothSlots cloth, float* volume) {
-  volumes(d, p, GridWalk{g}, cloth, volume);
+  volumes(d, p, GridWalk{g}, cloth, volume, 1);
 }
 
 void computeClothVolumes(Device d, ParticleView p, const ClothNeighbourView& n, ClothSlots cloth, float* volume) {
-  volumes(d, p, ListWalk{n}, cloth, volume);
+  volumes(d, p, ListWalk{n}, cloth, volume, kListLanes);
 }
 
 }  // namespace soak

@@ -71,10 +71,6 @@ namespace {
 // m0, else 0), kind), kind one of:
 constexpr float kFluidOther = 0.f, kFluidWater = 1.f, kFluidCloth = 2.f;
 
-// Lanes per particle at least, for the passes over the neighbour lists: a
-// group reads a list's consecutive entries together, which paid even at 1M
-// particles on the H100 (fluid.solve 14.0 ms with one lane, 12.1 with four).
-constexpr int kListLanes = 4;
 // Blocks of 256 threads the two list passes keep resident per SM: 5 caps
 // them at 48 registers (40 warps). The grid walk for particles without a
 // list (FluidNeighbours.h) had raised them from 46-47 to 54, which fits only

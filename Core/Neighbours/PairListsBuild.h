@@ -9,10 +9,11 @@
 // ranks each round's kept candidates by lane (a ballot), so the list keeps
 // the grid's order whatever the group's width.
 //
-// With `lanes` the builder gives each item a group of lanes (Base/Lanes.h):
-// the cloth's lists (14.4k items in the paper scenes, one thread each left
-// most of the GPU idle). The fluid's lists keep one thread per item: the
-// ballot variant did not pay there (Doc/performance.md).
+// With minLanes > 0 the builder gives each item a group of at least that
+// many lanes (Base/Lanes.h): the cloth's lists (14.4k items in the paper
+// scenes, one thread each left most of the GPU idle). With 0 the fluid's
+// lists keep one thread per item: the ballot variant did not pay there
+// (Doc/performance.md).
 #include "Backend/ForEach.h"
 #include "Neighbours/PairLists.h"
 
@@ -50,17 +51,17 @@ struct FillPairs {
 }  // namespace detail
 
 template <class Candidates>
-void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, bool lanes,
+void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, int minLanes,
                     const char* countName, const char* fillName) {
   const detail::CountPairs<Candidates> count{candidates, lists.countsFor(n)};
-  if (lanes)
-    forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { count(i, l); }, countName);
+  if (minLanes > 0)
+    forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { count(i, l); }, countName, minLanes);
   else
     forEach(d, n, SOAK_LAMBDA(int i) { count(i, Lanes{}); }, countName);
   lists.placeLists(sizeExactly);
   const detail::FillPairs<Candidates> fill{candidates, lists.fill()};
-  if (lanes)
-    forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { fill(i, l); }, fillName);
+  if (minLanes > 0)
+    forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { fill(i, l); }, fillName, minLanes);
   else
     forEach(d, n, SOAK_LAMBDA(int i) { fill(i, Lanes{}); }, fillName);
 }

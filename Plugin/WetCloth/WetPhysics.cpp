@@ -198,7 +198,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
       S[i] = saturationOf(c, a.held[i], a.volume[i]);
       const float den = sum2 + sum * sum * (1.f + eps);
       alpha[i] = den > 0.f ? kS * sum / den : 0.f;
-    }, "wet.diffuse.alpha");
+    }, "wet.diffuse.alpha", kListLanes);
     if (literal) {
       // Eq. 17 as written: each particle moves its own saturation (not conservative).
       forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
@@ -213,7 +213,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         if (!lanes.leader()) return;
         const float Snew = minf(maxf(S[i] + alpha[i] * C, 0.f), sMax);
         next[i] = Snew * a.volume[i] / c;
-      }, "wet.diffuse.literal");
+      }, "wet.diffuse.literal", kListLanes);
     } else {
       // Conservative form: the pair (receiver r, donor d) exchanges the mass
       // of the receiver's term of Eq. 17; the donor loses what the receiver
@@ -229,7 +229,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         });
         out = laneSum(lanes, out);
         if (lanes.leader()) limit[i] = out > a.held[i] ? a.held[i] / out : 1.f;
-      }, "wet.diffuse.limit");
+      }, "wet.diffuse.limit", kListLanes);
       forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
         const Vec3 xi = p.predicted[i].xyz();
         const float hi = p.radius[i];
@@ -246,7 +246,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         });
         change = laneSum(lanes, change);
         if (lanes.leader()) next[i] = maxf(a.held[i] + change, 0.f);
-      }, "wet.diffuse.exchange");
+      }, "wet.diffuse.exchange", kListLanes);
     }
     forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
       a.held[i] = next[i];
@@ -290,7 +290,7 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
       out[i] = a.buffer[i];
       norm[i] = below;
     }
-  }, "wet.emit.decide");
+  }, "wet.emit.decide", kListLanes);
   // Receivers below take cos(theta_ki) W_ki of the buffer, normalised so the
   // donor's whole buffer arrives (the paper's weights do not sum to one).
   // A particle reads its neighbours' out and norm and only its own buffer,
@@ -305,7 +305,7 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
     });
     gain = laneSum(lanes, gain);
     if (lanes.leader()) a.buffer[k] = a.buffer[k] - out[k] + gain;
-  }, "wet.emit.transfer");
+  }, "wet.emit.transfer", kListLanes);
 }
 
 void takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int room, int* due, int* offsets,
@@ -424,7 +424,7 @@ void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays 
     });
     f = laneSum(lanes, f);
     if (lanes.leader()) delta[i] = f * (dt * dt * xi4.w);
-  }, "wet.stick");
+  }, "wet.stick", kListLanes);
   applyCorrectionsAt(d, p, a.cloth.slot, a.cloth.count, delta, "wet.stick.apply");
 }
 
