@@ -1,7 +1,6 @@
 #include "Cloth/ClothVolume.h"
 
 #include "Backend/ForEach.h"
-#include "Fluid/SphKernels.h"
 
 namespace soak {
 
@@ -13,27 +12,12 @@ struct GridWalk {
     forEachCandidate(g, g.slotKey[i], lanes, f);
   }
 };
-struct ListWalk {
-  ClothNeighbourView n;
-  template <class F>
-  SOAK_INLINE void operator()(int, int v, const Lanes& lanes, F&& f) const {
-    forEachClothNeighbour(n, v, lanes, f);
-  }
-};
 
 template <class Walk>
 void volumes(Device d, ParticleView p, Walk walk, ClothSlots cloth, float* volume, int minLanes) {
   forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
-    const int phase = p.phase[i];
-    const Vec3 xi = p.predicted[i].xyz();
-    const float hi = p.radius[i];
-    float sum = 0.f;
-    walk(i, v, lanes, [&](int j) {
-      if (p.phase[j] != phase) return;
-      sum += poly6(lengthSquared(xi - p.predicted[j].xyz()), pairSupport(hi, p.radius[j]));
-    });
-    sum = laneSum(lanes, sum);
-    if (lanes.leader()) volume[i] = sum > 0.f ? 1.f / sum : 0.f;
+    const float V = clothVolumeOf(p, i, v, lanes, walk);
+    if (lanes.leader()) volume[i] = V;
   }, "cloth.volume", minLanes);
 }
 }  // namespace
@@ -43,7 +27,7 @@ void computeClothVolumes(Device d, ParticleView p, GridView g, ClothSlots cloth,
 }
 
 void computeClothVolumes(Device d, ParticleView p, const ClothNeighbourView& n, ClothSlots cloth, float* volume) {
-  volumes(d, p, ListWalk{n}, cloth, volume, kListLanes);
+  volumes(d, p, ClothListWalk{n}, cloth, volume, kListLanes);
 }
 
 }  // namespace soak

@@ -182,9 +182,9 @@ class WetClothModule : public Module {
     if (!w_.emission) return;
     WetArrays a = arrays(s);
     ParticleView p = s.particles.view();
-    transferBuffers(s.device(), p, s.grid.view(), a, w_, ref_);
-    due_.resize(std::size_t(p.count));
-    dripOffset_.resize(std::size_t(p.count));
+    due_.resize(std::size_t(a.cloth.count));
+    dripOffset_.resize(std::size_t(a.cloth.count));
+    transferBuffers(s.device(), p, s.grid.view(), a, w_, ref_, due_.data());
     dripSources_.resize(std::size_t(dripRoom_));
     takeDripMass(s.device(), p, a, w_, dripRoom_, due_.data(), dripOffset_.data(), dripSources_.data(),
                  dripCounters_.data());

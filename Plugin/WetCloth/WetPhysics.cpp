@@ -57,11 +57,15 @@ SOAK_INLINE float transferWeight(Vec3 xk, float hk, Vec3 xi, float hi, Vec3 g) {
 }  // namespace
 
 void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w) {
-  computeClothVolumes(d, p, a.clothNeighbours, a.cloth, a.volume);
   const float sEW = w.sEW, c = w.c, sT = w.sT, sMax = w.sMax;
   const bool wetWeight = w.wetWeight;
-  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-    const float V = a.volume[i];
+  const ClothListWalk lists{a.clothNeighbours};
+  // One pass: the volume over the cloth's lists (which read positions, not
+  // the masses and inverse masses this pass writes), then the rest.
+  forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+    const float V = clothVolumeOf(p, i, v, lanes, lists);
+    if (!lanes.leader()) return;
+    a.volume[i] = V;
     float held = a.held[i];
     // Water above S^EW is excess (Section 4.4): it leaves the fabric for the buffer.
     const float limit = sEW * V / c;
@@ -73,21 +77,21 @@ void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const Wet
     }
     const float S = saturationOf(c, held, V);  // Eq. 10
     a.saturation[i] = S;
-    const int v = p.id[i];
+    const int vertex = p.id[i];
     // Eq. 22 (per vertex), from all the water the particle carries, held and
     // buffered: cloth with excess water is the wettest (Doc/model.md).
     const float wetness = minf(saturationOf(c, held + a.buffer[i], V), sMax);
-    a.kappaCouple[v] = couplingStiffnessOf(wetness, sT, sMax);
+    a.kappaCouple[vertex] = couplingStiffnessOf(wetness, sT, sMax);
     if (wetWeight) {
       // Held and buffered water weigh on the cloth particle (the paper's rho0* = (m_i + m_j) / m_i).
-      const float m = a.dryMass[v] + held + a.buffer[i];
+      const float m = a.dryMass[vertex] + held + a.buffer[i];
       p.mass[i] = m;
       if (p.position[i].w > 0.f) {
         p.position[i].w = 1.f / m;
         p.predicted[i].w = 1.f / m;
       }
     }
-  }, "wet.porosity");
+  }, "wet.porosity", kListLanes);
 }
 
 void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref) {
@@ -255,8 +259,10 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
   }
 }
 
-void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref) {
+void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+                     int* due) {
   const Vec3 gd = ref.gravityDir;
+  const float mThr = w.mThreshold;
   const float threshold = w.beta * ref.gravity;
   float* out = a.scratchA;
   float* norm = a.scratchB;
@@ -304,7 +310,10 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
       gain += out[i] * transferWeight(xk, hk, p.predicted[i].xyz(), p.radius[i], gd) / norm[i];
     });
     gain = laneSum(lanes, gain);
-    if (lanes.leader()) a.buffer[k] = a.buffer[k] - out[k] + gain;
+    if (!lanes.leader()) return;
+    const float buffer = a.buffer[k] - out[k] + gain;
+    a.buffer[k] = buffer;
+    due[v] = buffer >= mThr ? 1 : 0;  // a drip is due (takeDripMass)
   }, "wet.emit.transfer", kListLanes);
 }
 
@@ -316,9 +325,6 @@ void takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int
   const int n = a.cloth.count;
   if (n == 0) return;
   const int* slot = a.cloth.slot;
-  forEach(d, n, SOAK_LAMBDA(int v) {
-    due[v] = a.buffer[slot[v]] >= mThr ? 1 : 0;
-  }, "wet.emit.due");
   exclusiveScanAsync(d, due, offsets, n);
   forEach(d, n, SOAK_LAMBDA(int v) {
     if (v == 0) {  // the bookkeeping, once

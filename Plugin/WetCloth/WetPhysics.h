@@ -54,8 +54,11 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
 void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref);
 
 // wet.emit, first half (Eq. 18): buffers move to the cloth particles below
-// where gravity overcomes the saturation difference above.
-void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref);
+// where gravity overcomes the saturation difference above. due[v] (per
+// cloth item, ClothSlots order) becomes 1 where the buffer now holds at
+// least m_threshold: a drip is due there (takeDripMass).
+void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+                     int* due);
 
 // Where a drip starts: its cloth particle's predicted position and velocity.
 struct DripSource {
@@ -72,11 +75,12 @@ struct DripCounters {
   long long deferred = 0;   // drips due but left for a later step for want of room
 };
 
-// Drips are due where a cloth buffer holds at least m_threshold. The first
-// `room` of them in slot order take m_threshold from their buffer and leave
-// their source in sources[0..pending); the others keep it and drip in a
-// later step. `due` and `offsets` are scratch of at least as many ints as
-// there are cloth particles. Nothing waits for the device.
+// Drips are due where a cloth buffer holds at least m_threshold (`due`, per
+// cloth item, as transferBuffers marked it). The first `room` of them in
+// slot order take m_threshold from their buffer and leave their source in
+// sources[0..pending); the others keep it and drip in a later step.
+// `offsets` is scratch of as many ints as there are cloth particles.
+// Nothing waits for the device.
 void takeDripMass(Device d, ParticleView p, WetArrays a, const WetParams& w, int room, int* due, int* offsets,
                   DripSource* sources, DripCounters* counters);
 
