@@ -155,37 +155,8 @@ int exclusiveScan(const int* in, int* out, int n) {
   return lastOut + last;
 }
 
-// Up to kSmallScan items: one block of 1024 threads, each scanning a chunk
-// of at most 32, instead of CUB's two launches (an init kernel and the
-// scan). The small scenes' scans (their cloth lists, drips and fluid lists:
-// 2-20k items) then cost one launch each.
-constexpr int kSmallScanThreads = 1024;
-constexpr int kSmallScan = 32 * kSmallScanThreads;
-
-__global__ void __launch_bounds__(kSmallScanThreads) smallExclusiveScan(const int* in, int* out, int n) {
-  using BlockScan = cub::BlockScan<int, kSmallScanThreads>;
-  __shared__ typename BlockScan::TempStorage temp;
-  const int per = (n + kSmallScanThreads - 1) / kSmallScanThreads;
-  const int first = int(threadIdx.x) * per;
-  const int end = min(first + per, n);
-  int sum = 0;
-  for (int k = first; k < end; ++k) sum += in[k];
-  int running = 0;
-  BlockScan(temp).ExclusiveSum(sum, running);
-  for (int k = first; k < end; ++k) {
-    const int v = in[k];  // before writing: in and out may be one array
-    out[k] = running;
-    running += v;
-  }
-}
-
 void exclusiveScanAsync(const int* in, int* out, int n) {
   if (n <= 0) return;
-  if (n <= kSmallScan) {
-    smallExclusiveScan<<<1, kSmallScanThreads>>>(in, out, n);
-    check(cudaGetLastError(), "exclusiveScanAsync");
-    return;
-  }
   std::size_t bytes = 0;
   cub::DeviceScan::ExclusiveSum(nullptr, bytes, in, out, n);
   check(cub::DeviceScan::ExclusiveSum(scratch().get(bytes), bytes, in, out, n), "exclusiveScanAsync");

@@ -1,5 +1,5 @@
-// Primitives on the GPU: the scans the step uses without waiting, at the
-// sizes where the single-block variant hands over to CUB's.
+// Primitives on the GPU: the scan the step uses without waiting (the lists'
+// offsets, the drips), at sizes around a block's and in place.
 #include <gtest/gtest.h>
 
 #include <random>
