@@ -123,24 +123,28 @@ SOAK_INLINE void spreadAround(const int c[3], std::uint32_t spread[3][3]) {
     for (int d = 0; d < 3; ++d) spread[k][d] = spreadAxis(c[k] + d - 1, k);
 }
 
+// Calls f(key, bucket) for the 27 cells around the cell with key
+// `centerKey`, in the order every query visits them; none where the grid's
+// near bits show that no entry lies in them.
+template <class F>
+SOAK_INLINE void forEachCellAround(const GridView& g, std::uint32_t centerKey, F&& f) {
+  const int c[3] = {int(centerKey & 1023u), int((centerKey >> 10) & 1023u), int((centerKey >> 20) & 1023u)};
+  std::uint32_t spread[3][3];
+  spreadAround(c, spread);
+  if (!mayHoldNear(g, (spread[0][1] | spread[1][1] | spread[2][1]) & g.bucketMask)) return;
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        f(packCellKey(c[0] + dx, c[1] + dy, c[2] + dz),
+          (spread[0][dx + 1] | spread[1][dy + 1] | spread[2][dz + 1]) & g.bucketMask);
+}
+
 // Calls f(j) once for every slot j whose cell is one of the 27 cells around
 // the cell with key `centerKey` (with `lanes`: this lane's share of them).
 // The caller applies its own distance test.
 template <class F>
 SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, const Lanes& lanes, F&& f) {
-  const int c[3] = {int(centerKey & 1023u), int((centerKey >> 10) & 1023u), int((centerKey >> 20) & 1023u)};
-  std::uint32_t spread[3][3];
-  spreadAround(c, spread);
-  if (!mayHoldNear(g, (spread[0][1] | spread[1][1] | spread[2][1]) & g.bucketMask)) return;
-  for (int dz = -1; dz <= 1; ++dz) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const std::uint32_t key = packCellKey(c[0] + dx, c[1] + dy, c[2] + dz);
-        const std::uint32_t b = (spread[0][dx + 1] | spread[1][dy + 1] | spread[2][dz + 1]) & g.bucketMask;
-        forEachInBucket(g, key, b, lanes, f);
-      }
-    }
-  }
+  forEachCellAround(g, centerKey, [&](std::uint32_t key, std::uint32_t b) { forEachInBucket(g, key, b, lanes, f); });
 }
 
 // The same in rounds, for passes that must keep the grid's order with
@@ -150,23 +154,14 @@ SOAK_INLINE void forEachCandidate(const GridView& g, std::uint32_t centerKey, co
 // All lanes of a group make the same calls, so f may vote (laneBallot).
 template <class F>
 SOAK_INLINE void forEachCandidateInRounds(const GridView& g, std::uint32_t centerKey, const Lanes& lanes, F&& f) {
-  const int c[3] = {int(centerKey & 1023u), int((centerKey >> 10) & 1023u), int((centerKey >> 20) & 1023u)};
-  std::uint32_t spread[3][3];
-  spreadAround(c, spread);
-  if (!mayHoldNear(g, (spread[0][1] | spread[1][1] | spread[2][1]) & g.bucketMask)) return;
-  for (int dz = -1; dz <= 1; ++dz) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const std::uint32_t key = packCellKey(c[0] + dx, c[1] + dy, c[2] + dz);
-        const BucketRange r = g.range[(spread[0][dx + 1] | spread[1][dy + 1] | spread[2][dz + 1]) & g.bucketMask];
-        for (std::uint32_t base = r.start; base < r.end; base += std::uint32_t(lanes.size)) {
-          const std::uint32_t k = base + std::uint32_t(lanes.index);
-          const bool valid = k < r.end && g.cellKey[k] == key;
-          f(valid, valid ? slotOfEntry(g, k) : -1);
-        }
-      }
+  forEachCellAround(g, centerKey, [&](std::uint32_t key, std::uint32_t b) {
+    const BucketRange r = g.range[b];
+    for (std::uint32_t base = r.start; base < r.end; base += std::uint32_t(lanes.size)) {
+      const std::uint32_t k = base + std::uint32_t(lanes.index);
+      const bool valid = k < r.end && g.cellKey[k] == key;
+      f(valid, valid ? slotOfEntry(g, k) : -1);
     }
-  }
+  });
 }
 
 template <class F>

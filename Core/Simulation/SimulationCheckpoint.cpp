@@ -2,6 +2,7 @@
 #include <typeinfo>
 
 #include "Checkpoint/StateStream.h"
+#include "Neighbours/PairListsState.h"
 #include "Simulation/Simulation.h"
 
 namespace soak {
@@ -14,10 +15,7 @@ void Simulation::saveState(StateWriter& out) const {
   out.put<std::int32_t>(nextWaterId);
   out.put<std::int32_t>(cloth.vertexCount());
   particles.saveState(out);
-  const FluidListSizing lists = fluid.neighbourListSizing();
-  out.put<std::int32_t>(lists.capacity);
-  out.put<std::int32_t>(lists.headroomEighths);
-  out.put<std::int32_t>(lists.overflowed ? 1 : 0);
+  putListSizing(out, fluid.neighbourListSizing());
   out.put<std::int32_t>(static_cast<std::int32_t>(modules_.size()));
   for (const auto& m : modules_) {
     const Module& module = *m;
@@ -37,12 +35,7 @@ void Simulation::loadState(StateReader& in) {
     in.fail("it was written for " + std::to_string(clothVertices) + " cloth vertices, the scene makes " +
             std::to_string(cloth.vertexCount()) + " (did a mesh change?)");
   particles.loadState(in);
-  FluidListSizing lists;
-  lists.capacity = in.get<std::int32_t>();
-  lists.headroomEighths = in.get<std::int32_t>();
-  lists.overflowed = in.get<std::int32_t>() != 0;
-  if (lists.capacity < 0 || lists.headroomEighths < 1 || lists.headroomEighths > 8)
-    in.fail("neighbour list sizing out of range");
+  const FluidListSizing lists = getListSizing(in, "neighbour list");
   const int moduleCount = in.get<std::int32_t>();
   if (moduleCount != int(modules_.size()))
     in.fail("it was written for " + std::to_string(moduleCount) + " scene elements, the scene has " +

@@ -9,6 +9,7 @@
 #include "Backend/Primitives.h"
 #include "Base/Error.h"
 #include "Checkpoint/StateStream.h"
+#include "Neighbours/PairListsState.h"
 #include "Pipeline/Pipeline.h"
 #include "Plugins/PluginApi.h"
 #include "Simulation/Simulation.h"
@@ -100,10 +101,7 @@ class WetClothModule : public Module {
     out.put<std::int64_t>(c.spawned);
     out.put<std::int64_t>(c.deferred);
     out.put<std::int32_t>(initialised_ ? 1 : 0);
-    const PairListSizing lists = clothNeighbours_->sizing();
-    out.put<std::int32_t>(lists.capacity);
-    out.put<std::int32_t>(lists.headroomEighths);
-    out.put<std::int32_t>(lists.overflowed ? 1 : 0);
+    putListSizing(out, clothNeighbours_->sizing());
   }
   void loadState(StateReader& in) override {
     const std::vector<DripSource> pending = in.getVector<DripSource>();
@@ -116,13 +114,7 @@ class WetClothModule : public Module {
     c.deferred = in.get<std::int64_t>();
     initialised_ = in.get<std::int32_t>() != 0;
     if (c.pending > takenRoom_ || dripRoom_ < 1) in.fail("drip bookkeeping out of range");
-    PairListSizing lists;
-    lists.capacity = in.get<std::int32_t>();
-    lists.headroomEighths = in.get<std::int32_t>();
-    lists.overflowed = in.get<std::int32_t>() != 0;
-    if (lists.capacity < 0 || lists.headroomEighths < 1 || lists.headroomEighths > 8)
-      in.fail("cloth neighbour list sizing out of range");
-    clothNeighbours_->setSizing(lists);
+    clothNeighbours_->setSizing(getListSizing(in, "cloth neighbour list"));
     dripSources_.upload(pending);
     dripCounters_.upload({c});
   }

@@ -1,0 +1,28 @@
+#pragma once
+// A PairListSizing in a checkpoint (the fluid's lists in the simulation's
+// section, the wet cloth's in its module's).
+#include <cstdint>
+#include <string>
+
+#include "Checkpoint/StateStream.h"
+#include "Neighbours/PairLists.h"
+
+namespace soak {
+
+inline void putListSizing(StateWriter& out, const PairListSizing& s) {
+  out.put<std::int32_t>(s.capacity);
+  out.put<std::int32_t>(s.headroomEighths);
+  out.put<std::int32_t>(s.overflowed ? 1 : 0);
+}
+
+// `what` names the lists in the refusal of a sizing out of range.
+inline PairListSizing getListSizing(StateReader& in, const std::string& what) {
+  PairListSizing s;
+  s.capacity = in.get<std::int32_t>();
+  s.headroomEighths = in.get<std::int32_t>();
+  s.overflowed = in.get<std::int32_t>() != 0;
+  if (s.capacity < 0 || s.headroomEighths < 1 || s.headroomEighths > 8) in.fail(what + " sizing out of range");
+  return s;
+}
+
+}  // namespace soak
