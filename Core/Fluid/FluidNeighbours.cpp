@@ -33,7 +33,7 @@ struct FluidCandidates {
 }  // namespace
 
 void FluidNeighbours::build(ParticleView p, GridView g, float skin, bool sizeExactly) {
-  buildPairLists(device_, lists_, p.count, sizeExactly, FluidCandidates{p, g, 1.f + skin}, 0,
+  buildPairLists(device_, lists_, p.count, sizeExactly, FluidCandidates{p, g, 1.f + skin}, 1,
                  "fluid.neighbours.count",
                  "fluid.neighbours.fill");
   const PairListView l = lists_.view();

@@ -10,10 +10,11 @@
 // the grid's order whatever the group's width.
 //
 // With minLanes > 0 the builder gives each item a group of at least that
-// many lanes (Base/Lanes.h): the cloth's lists (14.4k items in the paper
-// scenes, one thread each left most of the GPU idle). With 0 the fluid's
-// lists keep one thread per item: the ballot variant did not pay there
-// (Doc/performance.md).
+// many lanes (Base/Lanes.h; more where fewer than a million threads would
+// run), with 0 one thread. The cloth's lists take 4 (14.4k items in the
+// paper scenes: one thread each left most of the GPU idle). The fluid's
+// take 1: groups only where there are few particles; at 1M and more, 4
+// lanes made their build slower (Doc/performance.md).
 #include "Backend/ForEach.h"
 #include "Neighbours/PairLists.h"
 
@@ -53,14 +54,18 @@ struct FillPairs {
 template <class Candidates>
 void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, int minLanes,
                     const char* countName, const char* fillName) {
+  // One lane per item runs as one thread: the group's code (ballots, sums)
+  // in the kernel cost the fluid's build at 1M about 5 % (fluid.solve 11.1 ->
+  // 11.8 ms on the H100).
+  const bool lanes = minLanes > 0 && lanesFor(n, minLanes) > 1;
   const detail::CountPairs<Candidates> count{candidates, lists.countsFor(n)};
-  if (minLanes > 0)
+  if (lanes)
     forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { count(i, l); }, countName, minLanes);
   else
     forEach(d, n, SOAK_LAMBDA(int i) { count(i, Lanes{}); }, countName);
   lists.placeLists(sizeExactly);
   const detail::FillPairs<Candidates> fill{candidates, lists.fill()};
-  if (minLanes > 0)
+  if (lanes)
     forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { fill(i, l); }, fillName, minLanes);
   else
     forEach(d, n, SOAK_LAMBDA(int i) { fill(i, Lanes{}); }, fillName);
