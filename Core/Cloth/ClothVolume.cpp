@@ -12,22 +12,14 @@ struct GridWalk {
     forEachCandidate(g, g.slotKey[i], lanes, f);
   }
 };
-
-template <class Walk>
-void volumes(Device d, ParticleView p, Walk walk, ClothSlots cloth, float* volume, int minLanes) {
-  forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
-    const float V = clothVolumeOf(p, i, v, lanes, walk);
-    if (lanes.leader()) volume[i] = V;
-  }, "cloth.volume", minLanes);
-}
 }  // namespace
 
 void computeClothVolumes(Device d, ParticleView p, GridView g, ClothSlots cloth, float* volume) {
-  volumes(d, p, GridWalk{g}, cloth, volume, 1);
-}
-
-void computeClothVolumes(Device d, ParticleView p, const ClothNeighbourView& n, ClothSlots cloth, float* volume) {
-  volumes(d, p, ClothListWalk{n}, cloth, volume, kListLanes);
+  const GridWalk walk{g};
+  forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+    const float V = clothVolumeOf(p, i, v, lanes, walk);
+    if (lanes.leader()) volume[i] = V;
+  }, "cloth.volume");
 }
 
 }  // namespace soak

@@ -41,7 +41,5 @@ struct ClothListWalk {
 };
 
 void computeClothVolumes(Device d, ParticleView p, GridView g, ClothSlots cloth, float* volume);
-// The same over this step's cloth-cloth lists (the same bits with one lane).
-void computeClothVolumes(Device d, ParticleView p, const ClothNeighbourView& n, ClothSlots cloth, float* volume);
 
 }  // namespace soak
