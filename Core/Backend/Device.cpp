@@ -19,6 +19,7 @@ std::mutex g_mutex;
 std::unordered_map<const void*, std::size_t> g_sizes;
 std::size_t g_bytes[2] = {0, 0};
 std::atomic<unsigned long long> g_hostWaits{0};
+std::atomic<unsigned long long> g_launches{0};
 
 void remember(Device d, const void* p, std::size_t bytes) {
   std::lock_guard<std::mutex> lock(g_mutex);
@@ -53,6 +54,8 @@ Device resolveDevice(const std::string& request) {
 
 unsigned long long hostWaits() { return g_hostWaits.load(); }
 void countHostWait() { ++g_hostWaits; }
+unsigned long long launches() { return g_launches.load(std::memory_order_relaxed); }
+void countLaunch() { g_launches.fetch_add(1, std::memory_order_relaxed); }
 
 void synchronize(Device d) {
   countHostWait();
@@ -101,10 +104,12 @@ void copyDeviceToHost(Device d, void* dst, const void* src, std::size_t bytes) {
   else std::memcpy(dst, src, bytes);
 }
 void copyDeviceToDevice(Device d, void* dst, const void* src, std::size_t bytes) {
+  countLaunch();
   if (d == Device::Cuda) cuda::copy(dst, src, bytes, 2);
   else std::memmove(dst, src, bytes);
 }
 void fillBytes(Device d, void* dst, int value, std::size_t bytes) {
+  countLaunch();
   if (d == Device::Cuda) cuda::fill(dst, value, bytes);
   else std::memset(dst, value, bytes);
 }

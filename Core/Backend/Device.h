@@ -32,6 +32,14 @@ void synchronize(Device d);
 unsigned long long hostWaits();
 void countHostWait();
 
+// How many operations the host has put on the device's queue so far: one
+// per forEach, forEachLanes or forEachPhased call (one kernel on the GPU),
+// per device-to-device copy or fill, and per primitive (a CUB sort or scan
+// is 2-5 kernels; counted as one). Counted on both devices; soak-bench
+// prints it per step, the measure of what launch costs weigh.
+unsigned long long launches();
+void countLaunch();
+
 // Raw memory on a device. Errors throw DeviceError.
 void* deviceAllocate(Device d, std::size_t bytes);
 void deviceFree(Device d, void* p) noexcept;

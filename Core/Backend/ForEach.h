@@ -27,6 +27,7 @@ constexpr int kForEachBlockSize = 256;
 template <class F>
 void forEach(Device device, int n, F f, const char* what = "forEach") {
   if (n <= 0) return;
+  countLaunch();
   if (device == Device::Cuda) {
 #if defined(__CUDACC__)
     int blocks = (n + kForEachBlockSize - 1) / kForEachBlockSize;
@@ -93,6 +94,7 @@ __global__ void __launch_bounds__(kForEachBlockSize, minBlocks) soakForEachLanes
 template <int minBlocksPerSm = 0, class F>
 void forEachLanes(Device device, int n, F f, const char* what = "forEachLanes", int minLanes = 1) {
   if (n <= 0) return;
+  countLaunch();
   if (device == Device::Cuda) {
 #if defined(__CUDACC__)
     static_assert(kForEachBlockSize % 32 == 0, "groups must not straddle warps");

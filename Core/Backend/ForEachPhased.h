@@ -84,6 +84,7 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
       if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(soakPhasedKernel<F>), dim3(blocks),
                                       dim3(blockSize), args, 0, nullptr) == cudaSuccess) {
         checkLastLaunch(device, what);
+        countLaunch();
         return;
       }
       cudaGetLastError();  // clear the refusal; fall back below
@@ -91,6 +92,18 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
     }
 #endif
   }
+  if (device == Device::Cpu) {
+    // One operation, as the GPU's one cooperative launch (launches()).
+    countLaunch();
+    for (int r = 0; r < phases.repeat; ++r)
+      for (int p = 0; p < phases.count; ++p) {
+        const int first = phases.start[p], end = phases.start[p + 1];
+#pragma omp parallel for schedule(static)
+        for (int k = first; k < end; ++k) f(k);
+      }
+    return;
+  }
+  // The GPU without cooperative launches: one launch per phase.
   for (int r = 0; r < phases.repeat; ++r)
     for (int p = 0; p < phases.count; ++p) {
       const int first = phases.start[p];

@@ -39,16 +39,19 @@ float minChunk(const float* x, int b, int e) {
 }  // namespace
 
 double reduceSum(Device d, const float* x, int n) {
+  countLaunch();
   countHostWait();
   if (d == Device::Cuda) return cuda::reduceSum(x, n);
   return chunkedReduce<double>(n, 0.0, sumChunk, x, [](double a, double b) { return a + b; });
 }
 float reduceMax(Device d, const float* x, int n) {
+  countLaunch();
   countHostWait();
   if (d == Device::Cuda) return cuda::reduceMax(x, n);
   return chunkedReduce<float>(n, -3.0e38f, maxChunk, x, [](float a, float b) { return std::max(a, b); });
 }
 float reduceMin(Device d, const float* x, int n) {
+  countLaunch();
   countHostWait();
   if (d == Device::Cuda) return cuda::reduceMin(x, n);
   return chunkedReduce<float>(n, 3.0e38f, minChunk, x, [](float a, float b) { return std::min(a, b); });
@@ -67,17 +70,20 @@ int exclusiveScanCpu(const int* in, int* out, int n) {
 }  // namespace
 
 int exclusiveScan(Device d, const int* in, int* out, int n) {
+  countLaunch();
   countHostWait();
   if (d == Device::Cuda) return cuda::exclusiveScan(in, out, n);
   return exclusiveScanCpu(in, out, n);
 }
 
 void exclusiveScanAsync(Device d, const int* in, int* out, int n) {
+  countLaunch();
   if (d == Device::Cuda) return cuda::exclusiveScanAsync(in, out, n);
   exclusiveScanCpu(in, out, n);
 }
 
 void sortPairs(Device d, std::uint32_t* keys, std::uint32_t* values, int n, int keyBits) {
+  countLaunch();
   if (d == Device::Cuda) return cuda::sortPairs(keys, values, n, keyBits);
   if (n <= 1) return;
   std::uint32_t mask = keyBits >= 32 ? 0xffffffffu : ((1u << keyBits) - 1u);

@@ -23,7 +23,7 @@ namespace soak {
 // dx_i = 1/rho0 sum_j (lambda_i + lambda_j + s_corr) grad W_ij.
 
 FluidSolver::FluidSolver(Device device)
-    : device_(device), lambda_(device), density_(device), volume_(device), scratch_(device), delta_(device),
+    : device_(device), lambda_(device), density_(device), volume_(device), scratch_(device), spare_(device),
       omega_(device), attributes_(device), neighbours_(device) {}
 
 void FluidSolver::configure(const WaterSettings& water) {
@@ -54,7 +54,7 @@ void FluidSolver::resize(int n) {
   density_.resize(n);
   volume_.resize(n);
   scratch_.resize(n);
-  delta_.resize(n);
+  spare_.resize(n);
   omega_.resize(n);
   attributes_.resize(n);
 }
@@ -78,17 +78,21 @@ constexpr float kFluidOther = 0.f, kFluidWater = 1.f, kFluidCloth = 2.f;
 constexpr int kFluidPassBlocks = 5;
 
 struct CorrectionConstants {
-  float rho0, m0, corrK, corrQ, moveScale;
+  float rho0, m0, corrK, corrQ, moveScale, dt;
   const Collider* colliders;
   int colliderCount;
   const WallDensityTable* wall;
 };
 
 // dx of every water particle and of the cloth particles it touches, from the
-// multipliers `lam` (see the units comment above), then x* += dx.
+// multipliers `lam` (see the units comment above); then, for every slot,
+// next = x* + dx projected out of the colliders (x* as it is when it does
+// not move). Written to `next`, not to x*, which the pass's neighbours
+// still read: the two buffers swap roles each iteration. This is the old
+// three launches (corrections, x* += dx, colliders) in one, same bits.
 void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, const float* lam, const Float4* attr,
-                             Vec3* delta, CorrectionConstants k) {
-  const float corrK = k.corrK, corrQ = k.corrQ, moveScale = k.moveScale, m0 = k.m0;
+                             Float4* next, CorrectionConstants k) {
+  const float corrK = k.corrK, corrQ = k.corrQ, moveScale = k.moveScale, m0 = k.m0, dt = k.dt;
   const Collider* colliders = k.colliders;
   const int colliderCount = k.colliderCount;
   const WallDensityTable wall = *k.wall;
@@ -141,9 +145,17 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
       });
       dx = laneSum(lanes, dx) * (moveScale * psi / mui);
     }
-    if (lanes.leader()) delta[i] = dx;
+    if (!lanes.leader()) return;
+    Float4 x = xi4;
+    if (x.w > 0.f) {
+      if (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f) x = Float4(x.xyz() + dx, x.w);
+      if (colliderCount > 0)
+        x = Float4(projectOutOfColliders(colliders, colliderCount, p.position[i].xyz(), x.xyz(),
+                                         kCollisionRadiusScale * p.radius[i], dt),
+                   x.w);
+    }
+    next[i] = x;
   }, "fluid.delta", kListLanes);
-  applyCorrections(d, p, delta, "fluid.apply");
 }
 
 }  // namespace
@@ -165,11 +177,15 @@ void FluidSolver::solve(Simulation& sim) {
   const Collider* colliders = sim.deviceColliders();
   const int colliderCount = int(sim.colliders.size());
   const WallDensityTable wall = wall_;
-  const CorrectionConstants k{rho0, m0, corrK, corrQ, 1.f / (rho0 * m0), colliders, colliderCount, &wall_};
+  const CorrectionConstants k{rho0, m0, corrK, corrQ, 1.f / (rho0 * m0), float(sim.settings.timeStep),
+                              colliders, colliderCount, &wall_};
   float* lam = lambda_.data();
   float* rho = density_.data();
   const float* volume = volume_.data();
-  Vec3* delta = delta_.data();
+  // x* of this iteration (read) and of the next (written); swapped after
+  // each iteration (applyDensityCorrections).
+  Float4* const own = p.predicted;
+  Float4* spare = spare_.data();
   // What the passes read of a neighbour besides its position, in one load
   // (FluidAttributes): fixed for the whole solve.
   Float4* attr = attributes_.data();
@@ -227,10 +243,11 @@ void FluidSolver::solve(Simulation& sim) {
       const float G = sumG2 + lengthSquared(gradSelf) / mui;
       lam[i] = G + eps > 0.f ? -C * rho0 * rho0 / (G + eps) : 0.f;  // a lone particle: nothing to solve
     }, "fluid.lambda", kListLanes);
-    applyDensityCorrections(device_, p, g, lam, attr, delta, k);
-    projectColliders(device_, p, sim.deviceColliders(), int(sim.colliders.size()), kCollisionRadiusScale,
-                     float(sim.settings.timeStep));
+    applyDensityCorrections(device_, p, g, lam, attr, spare, k);
+    std::swap(p.predicted, spare);
   }
+  // After an odd number of iterations x* lies in the spare buffer.
+  if (p.predicted != own) sim.particles.swapPredicted(spare_);
 }
 
 namespace {
@@ -262,14 +279,14 @@ void FluidSolver::applyViscosity(Simulation& sim) {
   const float rho0 = ws.restDensity, c = ws.viscosity, vort = ws.vorticity;
   const float dt = float(sim.settings.timeStep);
   const float* rho = density_.data();
-  Vec3* vnew = delta_.data();
+  Float4* vnew = spare_.data();  // the new velocity (xyz)
   Vec3* omega = omega_.data();
   float* omegaNorm = scratch_.data();
   forEachLanes(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
     const Vec3 vi = p.velocity[i];
     if (!isWater(p.phase[i])) {
       if (lanes.leader()) {
-        vnew[i] = vi;
+        vnew[i] = Float4(vi, 0.f);
         omega[i] = Vec3(0.f, 0.f, 0.f);
         omegaNorm[i] = 0.f;
       }
@@ -285,7 +302,7 @@ void FluidSolver::applyViscosity(Simulation& sim) {
     visc = laneSum(lanes, visc);
     w = laneSum(lanes, w);
     if (!lanes.leader()) return;
-    vnew[i] = vi + visc * c;  // XSPH
+    vnew[i] = Float4(vi + visc * c, 0.f);  // XSPH
     omega[i] = w;
     omegaNorm[i] = length(w);
   }, "fluid.xsph");
@@ -300,10 +317,13 @@ void FluidSolver::applyViscosity(Simulation& sim) {
       eta = laneSum(lanes, eta);
       if (!lanes.leader()) return;
       const Vec3 N = normalizedOrZero(eta);
-      vnew[i] += cross(N, omega[i]) * (vort * dt);  // vorticity confinement force, as acceleration
+      // Vorticity confinement force, as acceleration. This pass reads no
+      // velocity, so it writes the new one in place (other slots keep theirs).
+      p.velocity[i] = vnew[i].xyz() + cross(N, omega[i]) * (vort * dt);
     }, "fluid.vorticity");
+    return;
   }
-  forEach(device_, p.count, SOAK_LAMBDA(int i) { p.velocity[i] = vnew[i]; }, "fluid.velocity");
+  forEach(device_, p.count, SOAK_LAMBDA(int i) { p.velocity[i] = vnew[i].xyz(); }, "fluid.velocity");
 }
 
 void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {

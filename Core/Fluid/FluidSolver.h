@@ -49,7 +49,10 @@ class FluidSolver {
   float restKernelSum_ = 1.f;
   WallDensityTable wall_;
   Buffer<float> lambda_, density_, volume_, scratch_;
-  Buffer<Vec3> delta_, omega_;
+  Buffer<Vec3> omega_;
+  // Per slot: x* of the next iteration during solve() (its passes swap it
+  // with the particles' x*), the new velocity (xyz) in applyViscosity().
+  Buffer<Float4> spare_;
   Buffer<Float4> attributes_;  // per particle during solve(): h, m / m0, boundary psi, kind (FluidSolver.cpp)
   FluidNeighbours neighbours_;
 };

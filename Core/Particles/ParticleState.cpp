@@ -1,20 +1,39 @@
 #include "Particles/ParticleState.h"
 
-#include "Backend/ForEach.h"
+#include <stdexcept>
+
+#include "Backend/ForEachPhased.h"
 #include "Backend/Primitives.h"
 
 namespace soak {
 
 namespace {
-// new[i] = old[order[i]] through a scratch buffer of the same bytes.
-template <class T>
-void gatherArray(Device d, Buffer<T>& data, const std::uint32_t* order, int n, Buffer<char>& scratch) {
-  if (n == 0) return;
-  scratch.resize(std::size_t(n) * sizeof(T));
-  T* tmp = reinterpret_cast<T*>(scratch.data());
-  const T* src = data.data();
-  forEach(d, n, SOAK_LAMBDA(int i) { tmp[i] = src[order[i]]; }, "gather");
-  copyDeviceToDevice(d, data.data(), tmp, std::size_t(n) * sizeof(T));
+// The gather moves every array through one scratch area, a batch of arrays
+// at a time: at most this many bytes per slot (so the scratch costs 32
+// bytes per slot, the particle arrays 76 with the wetting's channels).
+constexpr int kGatherBatchBytes = 32;
+constexpr int kMaxGatherArrays = 24;
+
+struct GatherArray {
+  char* data;
+  int bytes;   // per element: 4, 12 or 16
+  int offset;  // bytes per slot before it in its batch's scratch
+  int batch;
+};
+// Passed in the kernel's parameters; read with constant indices only (an
+// unrolled loop), so that it stays there rather than in local memory.
+struct GatherPlan {
+  GatherArray arrays[kMaxGatherArrays];
+  int count = 0;
+  int batches = 0;
+};
+
+SOAK_INLINE void copyElement(char* dst, const char* src, int bytes) {
+  if (bytes == 16) {
+    *reinterpret_cast<Float4*>(dst) = *reinterpret_cast<const Float4*>(src);
+  } else {
+    for (int w = 0; w < bytes / 4; ++w) reinterpret_cast<float*>(dst)[w] = reinterpret_cast<const float*>(src)[w];
+  }
 }
 }  // namespace
 
@@ -122,9 +141,62 @@ int ParticleState::removeFlagged(const int* remove) {
   return n - kept;
 }
 
+// new[i] = old[order[i]] for every array, in one launch (forEachPhased):
+// phase 2b gathers batch b into the scratch, phase 2b + 1 copies it back
+// (so the arrays keep their storage, and pointers to them stay valid). One
+// launch per array and one copy each had made the grid build 22 launches
+// of a few microseconds each in the small scenes (Doc/performance.md).
 void ParticleState::gather(const std::uint32_t* order) {
   const int n = count_;
-  forEachArray([&](auto& b) { gatherArray(device_, b, order, n, scratch_); });
+  if (n == 0) return;
+  GatherPlan plan;
+  int batchBytes = 0;
+  // 16-byte arrays come first (forEachArray's order), so they sit at
+  // 16-byte aligned offsets of their batch.
+  forEachArray([&](auto& b) {
+    const int bytes = int(sizeof(*b.data()));
+    if (plan.count == kMaxGatherArrays) throw std::logic_error("ParticleState::gather: too many channels");
+    if (plan.count == 0 || batchBytes + bytes > kGatherBatchBytes) {
+      ++plan.batches;
+      batchBytes = 0;
+    }
+    plan.arrays[plan.count++] = {reinterpret_cast<char*>(b.data()), bytes, batchBytes, plan.batches - 1};
+    batchBytes += bytes;
+  });
+  scratch_.resize(std::size_t(n) * kGatherBatchBytes);
+  char* scratch = scratch_.data();
+  const long long slots = n;
+  // Phase 2b: batch b into the scratch; phase 2b + 1: back.
+  auto move = SOAK_LAMBDA(int phase, int i) {
+    const int b = phase / 2;
+    const bool toScratch = phase % 2 == 0;
+#if defined(__CUDA_ARCH__)
+#pragma unroll
+#endif
+    for (int a = 0; a < kMaxGatherArrays; ++a) {
+      if (a >= plan.count || plan.arrays[a].batch != b) continue;
+      const GatherArray g = plan.arrays[a];
+      char* area = scratch + slots * g.offset;
+      if (toScratch) copyElement(area + std::size_t(i) * g.bytes, g.data + std::size_t(order[i]) * g.bytes, g.bytes);
+      else copyElement(g.data + std::size_t(i) * g.bytes, area + std::size_t(i) * g.bytes, g.bytes);
+    }
+  };
+  if (2LL * plan.batches * slots < (1LL << 30)) {
+    PhaseList phases;
+    for (int p = 0; p < 2 * plan.batches; ++p) phases.add(p * n, (p + 1) * n);
+    forEachPhased(device_, phases, SOAK_LAMBDA(int k) {
+      const int phase = int(k / slots);
+      move(phase, int(k - phase * slots));
+    }, "gather");
+  } else {
+    for (int p = 0; p < 2 * plan.batches; ++p) forEach(device_, n, SOAK_LAMBDA(int i) { move(p, i); }, "gather");
+  }
+}
+
+void ParticleState::swapPredicted(Buffer<Float4>& other) {
+  if (int(other.size()) < count_) throw std::logic_error("ParticleState::swapPredicted: buffer shorter than the particles");
+  other.resize(std::size_t(count_));
+  predicted_.swap(other);
 }
 
 int ParticleState::addChannel(const std::string& name) {

@@ -61,6 +61,9 @@ class ParticleState {
   int removeFlagged(const int* remove);
   // Reorders all arrays so that new slot i holds old slot order[i].
   void gather(const std::uint32_t* order);
+  // Exchanges the storage of x* with `other` (at least count() long): for a
+  // solver that writes the next x* beside the current one.
+  void swapPredicted(Buffer<Float4>& other);
 
   // Extra float channel: created (zeroed) on first call, same index afterwards.
   int addChannel(const std::string& name);

@@ -49,9 +49,11 @@ void Pipeline::run(Simulation& sim, Device device, bool profile,
   using Clock = std::chrono::steady_clock;
   for (std::size_t i = 0; i < stages_.size(); ++i) {
     auto t0 = Clock::now();
+    const unsigned long long launchesBefore = launches();
     stages_[i].run(sim);
     if (profile) synchronize(device);
     timings_[i].totalMs += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    timings_[i].launches += launches() - launchesBefore;
     ++timings_[i].calls;
     if (afterStage) afterStage(stages_[i].name);
   }
@@ -61,6 +63,7 @@ void Pipeline::resetTimings() {
   for (StageTiming& t : timings_) {
     t.totalMs = 0.0;
     t.calls = 0;
+    t.launches = 0;
   }
 }
 

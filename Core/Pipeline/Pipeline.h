@@ -20,7 +20,9 @@ struct StageTiming {
   std::string name;
   double totalMs = 0.0;
   long long calls = 0;
+  unsigned long long launches = 0;  // operations queued on the device (launches())
   double meanMs() const { return calls ? totalMs / double(calls) : 0.0; }
+  double meanLaunches() const { return calls ? double(launches) / double(calls) : 0.0; }
 };
 
 // The step: an ordered list of named, timed stages. Core adds the dry

@@ -19,6 +19,7 @@
 // counted: only maintenance steps wait (Simulation.h), one in 16.
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -47,6 +48,7 @@ struct Case {
 struct StageRow {
   std::string name;
   double ms;
+  double launches;  // per step
 };
 
 struct Result {
@@ -55,6 +57,9 @@ struct Result {
   double totalMs = 0, profiledMs = 0, wettingMs = 0;
   double bytesPerParticle = 0;
   double waitsPerStep = 0;  // host waits for the device (hostWaits()) per plain step
+  double launchesPerStep = 0;  // operations queued on the device (launches()) per plain step
+  double enqueueMs = 0;        // median host time to queue one step on an idle device
+  double aloneMs = 0;          // median time of one step from an idle device to its end
   std::vector<StageRow> stages;
 };
 
@@ -156,6 +161,12 @@ double nowMs() {
   return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
 }
 
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
 Result runCase(const Case& c, Device device, int steps, const std::vector<std::string>& overrides,
                int couplingLanes) {
   const std::size_t before = deviceBytesInUse(device);
@@ -174,18 +185,37 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
   const int cloth = sim.cloth.empty() ? 0 : sim.cloth.vertexCount();
   const double waterBefore = sim.collectStats().get("water_particles");
   synchronize(device);
-  const unsigned long long waitsBefore = hostWaits();
+  const unsigned long long waitsBefore = hostWaits(), launchesBefore = launches();
   const double t0 = nowMs();
   for (int s = 0; s < steps; ++s) sim.step(false);
   synchronize(device);
   r.totalMs = (nowMs() - t0) / steps;
   r.waitsPerStep = double(hostWaits() - waitsBefore - 1) / steps;
+  r.launchesPerStep = double(launches() - launchesBefore) / steps;
   const double waterAfter = sim.collectStats().get("water_particles");
+
+  // One step at a time from an idle device: the host's time to queue it
+  // (the call's return) and the step's whole time. Medians, so that the
+  // maintenance step among them (which waits) does not count. Where the
+  // queueing takes about as long as the step, launches, not the device,
+  // set the pace.
+  std::vector<double> enqueue, alone;
+  for (int s = 0; s < std::min(steps, 32); ++s) {
+    synchronize(device);
+    const double a = nowMs();
+    sim.step(false);
+    const double b = nowMs();
+    synchronize(device);
+    enqueue.push_back(b - a);
+    alone.push_back(nowMs() - a);
+  }
+  r.enqueueMs = median(enqueue);
+  r.aloneMs = median(alone);
 
   sim.pipeline.resetTimings();
   for (int s = 0; s < steps; ++s) sim.step(true);
   for (const StageTiming& t : sim.pipeline.timings()) {
-    r.stages.push_back({t.name, t.meanMs()});
+    r.stages.push_back({t.name, t.meanMs(), t.meanLaunches()});
     r.profiledMs += t.meanMs();
     if (t.name.rfind("wet.", 0) == 0) r.wettingMs += t.meanMs();
   }
@@ -200,6 +230,39 @@ std::string countText(double n) {
   if (n >= 1e6) std::snprintf(b, sizeof b, "%.2fM", n / 1e6);
   else std::snprintf(b, sizeof b, "%.1fk", n / 1e3);
   return b;
+}
+
+// One row per stage (in the order first met), one column per case.
+void printStageTable(const std::vector<Result>& results, const char* title, const char* format,
+                     double StageRow::*field) {
+  std::printf("\n%s:\n\n| stage |", title);
+  for (const Result& r : results) std::printf(" %s |", r.c.name.c_str());
+  std::printf("\n|---|");
+  for (std::size_t i = 0; i < results.size(); ++i) std::printf("---|");
+  std::printf("\n");
+  std::vector<std::string> names;
+  for (const Result& r : results)
+    for (const StageRow& s : r.stages) {
+      bool seen = false;
+      for (const std::string& n : names) seen = seen || n == s.name;
+      if (!seen) names.push_back(s.name);
+    }
+  for (const std::string& name : names) {
+    std::printf("| %s |", name.c_str());
+    for (const Result& r : results) {
+      const StageRow* row = nullptr;
+      for (const StageRow& s : r.stages)
+        if (s.name == name) row = &s;
+      if (!row) {
+        std::printf(" - |");
+      } else {
+        std::printf(" ");
+        std::printf(format, row->*field);
+        std::printf(" |");
+      }
+    }
+    std::printf("\n");
+  }
 }
 
 void printTable(const std::vector<Result>& results, const std::string& deviceText, int steps) {
@@ -220,29 +283,14 @@ void printTable(const std::vector<Result>& results, const std::string& deviceTex
     else
       std::printf(" - | - | - |\n");
   }
-  std::printf("\nper-stage ms per step (profiled):\n\n| stage |");
-  for (const Result& r : results) std::printf(" %s |", r.c.name.c_str());
-  std::printf("\n|---|");
-  for (std::size_t i = 0; i < results.size(); ++i) std::printf("---|");
-  std::printf("\n");
-  std::vector<std::string> names;
+  std::printf("\nlaunches: operations queued on the device per plain step (launches()); one step at a time from an\n"
+              "idle device (median of up to 32): the host's time to queue it, and the step's time to its end\n\n");
+  std::printf("| scene | launches/step | enqueue ms | alone ms | total ms |\n|---|---|---|---|---|\n");
   for (const Result& r : results)
-    for (const StageRow& s : r.stages) {
-      bool seen = false;
-      for (const std::string& n : names) seen = seen || n == s.name;
-      if (!seen) names.push_back(s.name);
-    }
-  for (const std::string& name : names) {
-    std::printf("| %s |", name.c_str());
-    for (const Result& r : results) {
-      double ms = -1;
-      for (const StageRow& s : r.stages)
-        if (s.name == name) ms = s.ms;
-      if (ms < 0) std::printf(" - |");
-      else std::printf(" %.3f |", ms);
-    }
-    std::printf("\n");
-  }
+    std::printf("| %s | %.1f | %.3f | %.3f | %.3f |\n", r.c.name.c_str(), r.launchesPerStep, r.enqueueMs, r.aloneMs,
+                r.totalMs);
+  printStageTable(results, "per-stage ms per step (profiled)", "%.3f", &StageRow::ms);
+  printStageTable(results, "per-stage launches per step", "%.1f", &StageRow::launches);
 }
 
 void writeJson(const std::string& file, const std::vector<Result>& results, const std::string& deviceText, int steps) {
@@ -255,7 +303,9 @@ void writeJson(const std::string& file, const std::vector<Result>& results, cons
       << ", \"wetting_ms\": " << r.wettingMs << ", \"total_ms\": " << r.totalMs
       << ", \"profiled_total_ms\": " << r.profiledMs << ", \"steps_per_s\": " << 1000.0 / r.totalMs
       << ", \"particle_steps_per_s\": " << (r.water + r.cloth) * 1000.0 / r.totalMs
-      << ", \"bytes_per_particle\": " << r.bytesPerParticle << ", \"host_waits_per_step\": " << r.waitsPerStep;
+      << ", \"bytes_per_particle\": " << r.bytesPerParticle << ", \"host_waits_per_step\": " << r.waitsPerStep
+      << ", \"launches_per_step\": " << r.launchesPerStep << ", \"enqueue_ms\": " << r.enqueueMs
+      << ", \"alone_ms\": " << r.aloneMs;
     if (r.c.paperTotalMs > 0)
       o << ", \"paper_total_ms\": " << r.c.paperTotalMs << ", \"paper_wetting_ms\": " << r.c.paperWettingMs
         << ", \"speedup\": " << r.c.paperTotalMs / r.totalMs;
