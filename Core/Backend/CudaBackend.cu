@@ -181,4 +181,20 @@ void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits) {
   }
 }
 
+void* createMark() {
+  cudaEvent_t e = nullptr;
+  check(cudaEventCreate(&e), "creating a timing event");
+  return e;
+}
+void destroyMark(void* mark) noexcept {
+  if (mark) cudaEventDestroy(static_cast<cudaEvent_t>(mark));
+}
+void recordMark(void* mark) { check(cudaEventRecord(static_cast<cudaEvent_t>(mark), 0), "recording a timing event"); }
+double markElapsedMs(void* from, void* to) {
+  check(cudaEventSynchronize(static_cast<cudaEvent_t>(to)), "waiting for a timing event");
+  float ms = 0.f;
+  check(cudaEventElapsedTime(&ms, static_cast<cudaEvent_t>(from), static_cast<cudaEvent_t>(to)), "timing events");
+  return double(ms);
+}
+
 }  // namespace soak::cuda

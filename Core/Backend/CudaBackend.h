@@ -28,4 +28,11 @@ void exclusiveScanAsync(const int* in, int* out, int n);
 // Stable sort of (key, value) pairs by the low `keyBits` bits of key.
 void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits);
 
+// Timing marks on the device's queue (CUDA events), for DeviceMarks.
+void* createMark();
+void destroyMark(void* mark) noexcept;
+void recordMark(void* mark);
+// Waits for `to`; milliseconds between the two marks.
+double markElapsedMs(void* from, void* to);
+
 }  // namespace soak::cuda

@@ -27,4 +27,8 @@ float reduceMin(const float*, int) { refuse(); }
 int exclusiveScan(const int*, int*, int) { refuse(); }
 void exclusiveScanAsync(const int*, int*, int) { refuse(); }
 void sortPairs(std::uint32_t*, std::uint32_t*, int, int) { refuse(); }
+void* createMark() { refuse(); }
+void destroyMark(void*) noexcept {}
+void recordMark(void*) { refuse(); }
+double markElapsedMs(void*, void*) { refuse(); }
 }  // namespace soak::cuda

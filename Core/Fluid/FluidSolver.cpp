@@ -166,7 +166,7 @@ void FluidSolver::solve(Simulation& sim) {
   resize(p.count);
   // Pairs within (1 + skin) h, once per step (FluidNeighbours.h).
   neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin, sim.sizeListsNow());
-  const FluidNeighbourView g = neighbours_.view();
+  FluidNeighbourView g = neighbours_.view();
   const WaterSettings ws = sim.water;
   const float rho0 = ws.restDensity, m0 = ws.particleMass;
   const float eps = ws.relaxation * restDenominator_;
@@ -245,6 +245,7 @@ void FluidSolver::solve(Simulation& sim) {
     }, "fluid.lambda", kListLanes);
     applyDensityCorrections(device_, p, g, lam, attr, spare, k);
     std::swap(p.predicted, spare);
+    g.predicted = p.predicted;
   }
   // After an odd number of iterations x* lies in the spare buffer.
   if (p.predicted != own) sim.particles.swapPredicted(spare_);

@@ -47,16 +47,23 @@ std::vector<std::string> Pipeline::names() const {
 void Pipeline::run(Simulation& sim, Device device, bool profile,
                    const std::function<void(const std::string&)>& afterStage) {
   using Clock = std::chrono::steady_clock;
+  if (profile && (!marks_ || marksDevice_ != device)) {
+    marks_ = std::make_unique<DeviceMarks>(device);
+    marksDevice_ = device;
+  }
   for (std::size_t i = 0; i < stages_.size(); ++i) {
     auto t0 = Clock::now();
     const unsigned long long launchesBefore = launches();
+    if (profile) marks_->mark(2 * int(i));
     stages_[i].run(sim);
-    if (profile) synchronize(device);
-    timings_[i].totalMs += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    if (profile) marks_->mark(2 * int(i) + 1);
+    else timings_[i].totalMs += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     timings_[i].launches += launches() - launchesBefore;
     ++timings_[i].calls;
     if (afterStage) afterStage(stages_[i].name);
   }
+  if (profile)
+    for (std::size_t i = 0; i < stages_.size(); ++i) timings_[i].totalMs += marks_->elapsedMs(2 * int(i), 2 * int(i) + 1);
 }
 
 void Pipeline::resetTimings() {

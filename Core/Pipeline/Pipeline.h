@@ -1,9 +1,11 @@
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "Backend/Device.h"
+#include "Backend/DeviceMarks.h"
 
 namespace soak {
 
@@ -37,8 +39,11 @@ class Pipeline {
   bool has(const std::string& name) const;
   std::vector<std::string> names() const;
 
-  // Runs every stage once. With `profile`, device work is waited for after
-  // each stage so its time is its own (slower, but honest on the GPU).
+  // Runs every stage once. With `profile`, each stage's time is the
+  // device's, between marks put on its queue before and after the stage
+  // (DeviceMarks), read once the step is done: the stages' times add up to
+  // the step's. Without, a stage's time is the host's time in its call (on
+  // the GPU, mostly the time to queue its work).
   // `afterStage`, where given, is called with each stage's name after it ran.
   void run(Simulation& sim, Device device, bool profile,
            const std::function<void(const std::string&)>& afterStage = {});
@@ -51,6 +56,8 @@ class Pipeline {
   void insertAt(std::size_t index, Stage stage);
   std::vector<Stage> stages_;
   std::vector<StageTiming> timings_;
+  std::unique_ptr<DeviceMarks> marks_;  // profile runs; made for the device of the first
+  Device marksDevice_ = Device::Cpu;
 };
 
 }  // namespace soak

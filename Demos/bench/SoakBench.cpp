@@ -13,8 +13,8 @@
 // for Table 2 scenes, so the jet has emitted its water; steps for the scale
 // scenes), then N steps are timed twice: once as a plain run (wall time over
 // N steps, device synchronised at the end) and once with per-stage profiling
-// (device synchronised after each stage, so the stages add up to a little
-// more than the plain time). "waits/step": the times the host waited for
+// (each stage timed on the device between events queued before and after
+// it, Pipeline::run; the stages add up to about the plain time). "waits/step": the times the host waited for
 // the device (hostWaits()) per plain step, the final synchronisation not
 // counted: only maintenance steps wait (Simulation.h), one in 16.
 #include <omp.h>

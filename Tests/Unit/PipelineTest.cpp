@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
+#include "Backend/ForEach.h"
 #include "Pipeline/Pipeline.h"
 #include "Simulation/Simulation.h"
 
@@ -31,4 +35,32 @@ TEST(Pipeline, MissingAnchorListsStages) {
     EXPECT_NE(std::string(e.what()).find("predict, drain, neighbours, fluid.solve, cloth.solve"), std::string::npos) << e.what();
   }
   EXPECT_THROW(sim.pipeline.append({"predict", [](Simulation&) {}}), std::invalid_argument);
+}
+
+// A profiled stage's time is its own: not the work between stages (the
+// instability check's callback), nor the next stage's. And every forEach a
+// stage runs counts as one launch of that stage.
+TEST(Pipeline, ProfiledStagesTimeOnlyThemselvesAndCountTheirLaunches) {
+  Pipeline pipeline;
+  auto sleepMs = [](int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); };
+  std::vector<int> sink(64, 0);
+  int* out = sink.data();
+  pipeline.append({"slow", [&](Simulation&) {
+                     sleepMs(40);
+                     for (int k = 0; k < 3; ++k) forEach(Device::Cpu, 64, [=](int i) { out[i] += 1; });
+                   }});
+  pipeline.append({"quick", [&](Simulation&) { sleepMs(2); }});
+  Simulation unused(Device::Cpu);
+  pipeline.run(unused, Device::Cpu, true, [&](const std::string& stage) {
+    if (stage == "slow") sleepMs(60);  // between the stages: nobody's time
+  });
+  const std::vector<StageTiming>& t = pipeline.timings();
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_GE(t[0].meanMs(), 40.0);
+  EXPECT_LT(t[0].meanMs(), 95.0);  // not the 60 ms that follow it
+  EXPECT_GE(t[1].meanMs(), 2.0);
+  EXPECT_LT(t[1].meanMs(), 55.0);  // not the 60 ms before it
+  EXPECT_EQ(t[0].meanLaunches(), 3.0);
+  EXPECT_EQ(t[1].meanLaunches(), 0.0);
+  EXPECT_EQ(sink[5], 3);
 }
