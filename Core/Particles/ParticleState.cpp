@@ -1,5 +1,6 @@
 #include "Particles/ParticleState.h"
 
+#include <cstring>
 #include <stdexcept>
 
 #include "Backend/ForEachPhased.h"
@@ -29,6 +30,19 @@ struct GatherPlan {
   int count = 0;
   int batches = 0;
 };
+
+// new[i] = old[order[i]] through the scratch, one array (the CPU's gather:
+// typed loops that the compiler vectorises; the GPU's batched launch below
+// took the CPU's grid build at 100k particles from 11.9 to 21.0 ms).
+template <class T>
+void gatherArray(Buffer<T>& data, const std::uint32_t* order, int n, Buffer<char>& scratch) {
+  scratch.resize(std::size_t(n) * sizeof(T));
+  T* tmp = reinterpret_cast<T*>(scratch.data());
+  const T* src = data.data();
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) tmp[i] = src[order[i]];
+  std::memcpy(data.data(), tmp, std::size_t(n) * sizeof(T));
+}
 
 SOAK_INLINE void copyElement(char* dst, const char* src, int bytes) {
   if (bytes == 16) {
@@ -151,6 +165,10 @@ int ParticleState::removeFlagged(const int* remove) {
 void ParticleState::gather(const std::uint32_t* order) {
   const int n = count_;
   if (n == 0) return;
+  if (device_ == Device::Cpu) {
+    forEachArray([&](auto& b) { gatherArray(b, order, n, scratch_); });
+    return;
+  }
   GatherPlan plan;
   int batchBytes = 0;
   // 16-byte arrays come first (forEachArray's order), so they sit at
