@@ -227,3 +227,27 @@ TEST(Coupling, JetOnHangingSheetRuns1000StepsWithoutNaN) {
   EXPECT_NEAR(row.get("free_water_mass") + row.get("drained_water_mass"), row.get("emitted_water_mass"),
               1e-4 * row.get("emitted_water_mass"));
 }
+
+TEST(Water, AnOddNumberOfIterationsKeepsItsLastCorrection) {
+  // The density passes write the next x* beside the current one and swap
+  // the two each iteration; after an odd number the result lies in the
+  // spare buffer and must be handed to the particles. A column standing
+  // for 40 steps with one iteration per step is compressed about 2.6 times
+  // as much as with two (0.31 against 0.12 here); without its last, and
+  // only, correction it had none at all and piled up on the floor (3.8).
+  auto settle = [](int iterations) {
+    test::TestRegistry reg;
+    auto sim = scene("<Water iterations='" + std::to_string(iterations) +
+                         "'/><WaterBlock min='0 0 0' max='0.16 0.16 0.16'/>"
+                         "<Box min='0 0 0' max='0.16 1 0.16' inside='true' friction='0'/>",
+                     reg);
+    for (int s = 0; s < 40; ++s) sim->step();
+    double mean = 0.0;
+    float max = 0.f;
+    sim->fluid.densityError(*sim, mean, max);
+    return mean;
+  };
+  const double one = settle(1), two = settle(2);
+  std::printf("column after 40 steps: mean density error %.4f with 1 iteration, %.4f with 2\n", one, two);
+  EXPECT_LT(one, 4.0 * two);
+}
