@@ -20,6 +20,7 @@ class DeviceMarks {
   DeviceMarks(const DeviceMarks&) = delete;
   DeviceMarks& operator=(const DeviceMarks&) = delete;
 
+  Device device() const { return device_; }
   void mark(int k);
   double elapsedMs(int a, int b);
 

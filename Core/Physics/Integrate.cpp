@@ -40,10 +40,6 @@ SOAK_INLINE void applyCorrection(const ParticleView& p, int i, const Vec3* delta
 }
 }  // namespace
 
-void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* what) {
-  forEach(d, p.count, SOAK_LAMBDA(int i) { applyCorrection(p, i, delta); }, what);
-}
-
 void applyCorrectionsAt(Device d, ParticleView p, const int* slots, int count, const Vec3* delta, const char* what) {
   forEach(d, count, SOAK_LAMBDA(int k) { applyCorrection(p, slots[k], delta); }, what);
 }

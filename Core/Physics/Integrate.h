@@ -20,10 +20,9 @@ void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Ve
 void projectColliders(Device d, ParticleView p, const Collider* colliders, int colliderCount, float radiusScale,
                       float dt);
 
-// x* += delta for every particle that moves (inverse mass > 0): the second
-// half of a Jacobi pass whose corrections were gathered into `delta`.
-void applyCorrections(Device d, ParticleView p, const Vec3* delta, const char* what);
-// The same for the `count` particles whose slots are listed in `slots` (the cloth's, say).
+// x* += delta for each of the `count` particles whose slots are listed in
+// `slots` (the cloth's, say) that moves (inverse mass > 0): the second half
+// of a Jacobi pass whose corrections were gathered into `delta`.
 void applyCorrectionsAt(Device d, ParticleView p, const int* slots, int count, const Vec3* delta, const char* what);
 
 // v = (x* - x) / dt (+ velocityFix, where given: the cloth sub-steps' end

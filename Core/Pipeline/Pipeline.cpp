@@ -47,10 +47,7 @@ std::vector<std::string> Pipeline::names() const {
 void Pipeline::run(Simulation& sim, Device device, bool profile,
                    const std::function<void(const std::string&)>& afterStage) {
   using Clock = std::chrono::steady_clock;
-  if (profile && (!marks_ || marksDevice_ != device)) {
-    marks_ = std::make_unique<DeviceMarks>(device);
-    marksDevice_ = device;
-  }
+  if (profile && (!marks_ || marks_->device() != device)) marks_ = std::make_unique<DeviceMarks>(device);
   for (std::size_t i = 0; i < stages_.size(); ++i) {
     auto t0 = Clock::now();
     const unsigned long long launchesBefore = launches();

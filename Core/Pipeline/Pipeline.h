@@ -56,8 +56,7 @@ class Pipeline {
   void insertAt(std::size_t index, Stage stage);
   std::vector<Stage> stages_;
   std::vector<StageTiming> timings_;
-  std::unique_ptr<DeviceMarks> marks_;  // profile runs; made for the device of the first
-  Device marksDevice_ = Device::Cpu;
+  std::unique_ptr<DeviceMarks> marks_;  // profile runs; made again if the device changes
 };
 
 }  // namespace soak
