@@ -40,15 +40,27 @@ struct ClothTriangle {
 // water-triangle coupling) read it: its vertices now and at the start of the
 // step, and both unit normals, in one place. Stored at the triangle's
 // position k in firstVertexTriangles and refreshed before each search
-// (Coupling/TriangleCoupling.h), so that a test reads 128 contiguous bytes
+// (Coupling/TriangleCoupling.h), so that a test reads contiguous bytes
 // instead of three slots and six particle positions, and does not recompute
 // the normals for every particle that tests the triangle.
+//
+// Eight vectors packed into six Float4 (96 bytes, not eight Float4 with a
+// spare w each): the first three hold what every test reads (a, n, a0, n0:
+// which side the particle came from and how far it is now), the last three
+// what only a test that goes on reads (b, c; b0, c0 where the path crossed
+// the plane). A degenerate triangle has n = 0 (makeTriangleSnapshot).
 struct TriangleSnapshot {
-  Float4 a, b, c;     // predicted vertices; a.w: |(b - a) x (c - a)| (twice the area)
-  Float4 a0, b0, c0;  // start-of-step vertices
-  Float4 n;           // unit normal now
-  Float4 n0;          // unit normal at the start (n where the triangle flipped)
+  Float4 q[6];
+  SOAK_HD Vec3 a() const { return Vec3(q[0].x, q[0].y, q[0].z); }                 // predicted vertices
+  SOAK_HD Vec3 n() const { return Vec3(q[0].w, q[1].x, q[1].y); }                 // unit normal now
+  SOAK_HD Vec3 a0() const { return Vec3(q[1].z, q[1].w, q[2].x); }                // start-of-step vertices
+  SOAK_HD Vec3 n0() const { return Vec3(q[2].y, q[2].z, q[2].w); }                // unit normal at the start
+  SOAK_HD Vec3 b() const { return Vec3(q[3].x, q[3].y, q[3].z); }
+  SOAK_HD Vec3 c() const { return Vec3(q[3].w, q[4].x, q[4].y); }
+  SOAK_HD Vec3 b0() const { return Vec3(q[4].z, q[4].w, q[5].x); }
+  SOAK_HD Vec3 c0() const { return Vec3(q[5].y, q[5].z, q[5].w); }
 };
+static_assert(sizeof(TriangleSnapshot) == 96, "six Float4 per triangle");
 
 // What the cloth stages see (raw device pointers, passed to kernels).
 struct ClothView {

@@ -34,30 +34,29 @@ SOAK_INLINE TriangleSnapshot makeTriangleSnapshot(Vec3 a0, Vec3 b0, Vec3 c0, Vec
   Vec3 n0 = normalizedOrZero(cross(b0 - a0, c0 - a0));
   if (dot(n0, n) <= 0.f) n0 = n;  // triangle flipped within a step: trust the new normal
   TriangleSnapshot t;
-  t.a = Float4(a, area2);
-  t.b = Float4(b, 0.f);
-  t.c = Float4(c, 0.f);
-  t.a0 = Float4(a0, 0.f);
-  t.b0 = Float4(b0, 0.f);
-  t.c0 = Float4(c0, 0.f);
-  t.n = Float4(n, 0.f);
-  t.n0 = Float4(n0, 0.f);
+  t.q[0] = Float4(a.x, a.y, a.z, n.x);
+  t.q[1] = Float4(n.y, n.z, a0.x, a0.y);
+  t.q[2] = Float4(a0.z, n0.x, n0.y, n0.z);
+  t.q[3] = Float4(b.x, b.y, b.z, c.x);
+  t.q[4] = Float4(c.y, c.z, b0.x, b0.y);
+  t.q[5] = Float4(b0.z, c0.x, c0.y, c0.z);
   return t;
 }
 
 SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, const TriangleSnapshot& tri, float d,
                                             float depthMargin = 0.5f) {
   const Vec3 zero(0.f, 0.f, 0.f);
-  const float area2 = tri.a.w;
-  if (area2 < 1e-14f) return zero;
-  const Vec3 a = tri.a.xyz(), b = tri.b.xyz(), c = tri.c.xyz(), a0 = tri.a0.xyz();
-  const Vec3 n = tri.n.xyz(), n0 = tri.n0.xyz();
+  const Vec3 n = tri.n();
+  // A triangle of (almost) no area has no normal: nothing to keep out of.
+  if (n.x == 0.f && n.y == 0.f && n.z == 0.f) return zero;
+  const Vec3 a = tri.a(), a0 = tri.a0(), n0 = tri.n0();
   // The side the particle came from (the +/- of Eq. 21).
   const float s0 = dot(x0 - a0, n0);
   const float sigma = s0 >= 0.f ? 1.f : -1.f;
   const float s1 = sigma * dot(x - a, n);
   const float C = s1 - d;
   if (C >= 0.f) return zero;
+  const Vec3 b = tri.b(), c = tri.c();
   bool inside;
   if (s1 >= 0.f) {
     // Still on its side, closer than d: where it projects onto the plane.
@@ -73,7 +72,8 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, const TriangleSnaps
     // triangle is grown by a margin that grows with the depth reached: the
     // path's crossing through a crease between two triangles may fall just
     // outside each.
-    const Vec3 b0 = tri.b0.xyz(), c0 = tri.c0.xyz();
+    const Vec3 b0 = tri.b0(), c0 = tri.c0();
+    const float area2 = length(cross(b - a, c - a));  // as makeTriangleSnapshot found it
     const float t = fabsf(s0) / (fabsf(s0) - s1);
     const Vec3 xt = x0 + (x - x0) * t;
     const Vec3 at = a0 + (a - a0) * t, bt = b0 + (b - b0) * t, ct = c0 + (c - c0) * t;
