@@ -29,12 +29,22 @@ struct ClothCandidates {
     });
   }
 };
+
+// An item's key: its particle's vertex, which no reordering changes.
+struct VertexOfItem {
+  const int* id;
+  const int* slot;
+  SOAK_INLINE int operator()(int v) const { return id[slot[v]]; }
+};
 }  // namespace
 
 void ClothNeighbours::build(ParticleView p, GridView g, ClothSlots cloth, const float* thickness, bool sizeExactly,
                             bool lanes) {
-  buildPairLists(device_, lists_, cloth.count, sizeExactly, ClothCandidates{p, g, cloth.slot, thickness}, lanes ? kListLanes : 0,
-                 "cloth.neighbours.count", "cloth.neighbours.fill");
+  // Keyed by vertex: between maintenance steps one pass fills each list
+  // into its vertex's room (PairLists.h).
+  buildKeyedPairLists(device_, lists_, cloth.count, sizeExactly, ClothCandidates{p, g, cloth.slot, thickness},
+                      VertexOfItem{p.id, cloth.slot}, cloth.count, lanes ? kListLanes : 0, "cloth.neighbours.count",
+                      "cloth.neighbours.fill");
   view_ = {lists_.view(), g, cloth.slot};
 }
 

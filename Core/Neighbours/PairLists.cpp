@@ -15,18 +15,23 @@ int* PairLists::countsFor(int n) {
   return count_.data();
 }
 
+// Items went without a list since the last sizing: the pairs grow faster
+// than the headroom, so double it (up to as many again as now).
+void PairLists::growHeadroomIfOverflowed() {
+  if (overflow_.download()[0] != 0) {
+    headroomEighths_ = headroomEighths_ < 8 ? 2 * headroomEighths_ : 8;
+    overflow_.fillZero();
+  }
+}
+
 void PairLists::placeLists(bool sizeExactly) {
+  roomKeys_ = 0;
   if (!sizeExactly) {
     exclusiveScanAsync(device_, count_.data(), start_.data(), items_);
     return;
   }
   const int total = exclusiveScan(device_, count_.data(), start_.data(), items_);
-  // Items went without a list since the last sizing: the pairs grow faster
-  // than the headroom, so double it (up to as many again as now).
-  if (overflow_.download()[0] != 0) {
-    headroomEighths_ = headroomEighths_ < 8 ? 2 * headroomEighths_ : 8;
-    overflow_.fillZero();
-  }
+  growHeadroomIfOverflowed();
   // Room for more than now (1/8 at first), so that lists growing until the
   // next sizing still fit; the old contents are not needed.
   const std::size_t entries = std::size_t(total > 0 ? total : 1);
@@ -34,6 +39,41 @@ void PairLists::placeLists(bool sizeExactly) {
     index_ = Buffer<int>(device_);
     index_.resize(entries + entries * std::size_t(headroomEighths_) / 8);
   }
+}
+
+int* PairLists::roomCountsFor(int keys) {
+  growHeadroomIfOverflowed();
+  roomKeys_ = 0;
+  roomCount_.resize(std::size_t(keys) + 1);
+  roomCount_.fillZero();
+  roomStart_.resize(std::size_t(keys) + 1);
+  return roomCount_.data();
+}
+
+void PairLists::placeRooms() {
+  const int keys = int(roomCount_.size()) - 1;
+  // Over keys + 1 counts, the last 0: roomStart[keys] is the total.
+  const int total = exclusiveScan(device_, roomCount_.data(), roomStart_.data(), keys + 1);
+  // The rooms, then the spill (the headroom's eighths of them); the buffer
+  // is made again where it is too small or more than twice too large.
+  const std::size_t entries = std::size_t(total) + std::size_t(total) * std::size_t(headroomEighths_) / 8 + 1;
+  if (entries > index_.size() || 2 * entries < index_.size()) {
+    index_ = Buffer<int>(device_);
+    index_.resize(entries);
+  }
+  roomKeys_ = keys;
+  roomsEnd_ = total;
+}
+
+void PairLists::clearSpill() {
+  if (spillUsed_.size() == 0) spillUsed_.resize(1);
+  spillUsed_.fillZero();
+}
+
+PairLists::RoomFill PairLists::roomFill() {
+  const int capacity = int(index_.size());
+  return {roomStart_.data(), start_.data(), count_.data(), index_.data(), capacity, overflow_.data(),
+          roomsEnd_, capacity - roomsEnd_, spillUsed_.data()};
 }
 
 PairLists::Fill PairLists::fill() {
@@ -49,6 +89,7 @@ PairListSizing PairLists::sizing() const {
   s.capacity = int(index_.size());
   s.headroomEighths = headroomEighths_;
   s.overflowed = overflow_.size() > 0 && overflow_.download()[0] != 0;
+  if (roomKeys_ > 0) s.roomStart = roomStart_.download();
   return s;
 }
 
@@ -58,6 +99,13 @@ void PairLists::setSizing(const PairListSizing& s) {
   headroomEighths_ = s.headroomEighths;
   overflow_.resize(1);
   overflow_.upload({s.overflowed ? 1 : 0});
+  roomKeys_ = 0;
+  if (s.roomStart.size() > 1) {
+    roomStart_.upload(s.roomStart);
+    roomCount_.resize(s.roomStart.size());
+    roomKeys_ = int(s.roomStart.size()) - 1;
+    roomsEnd_ = s.roomStart.back();
+  }
 }
 
 int PairLists::itemsWithoutList() const {

@@ -10,6 +10,17 @@
 // headroom left when sizing doubles, up to as many entries again, whenever
 // an item went without a list since the last sizing. The sizing decides
 // which items walk the grid, so checkpoints keep it (PairListSizing).
+//
+// Rooms (keyed lists): where every item has a key that stays its own from
+// step to step (a cloth particle's vertex), a sizing also gives each key a
+// room in the buffer, its count then plus a little, and the builds between
+// sizings fill each item's list straight into its key's room, in one pass,
+// without counting first (the count pass and its scan were a third of the
+// cloth lists' time in the paper scenes). After the rooms lies a spill area
+// of the headroom's size: an item that outgrew its room walks its
+// candidates again into room claimed there (by an atomic: the place of its
+// list may change from run to run, not the list), and one that finds the
+// spill full gets no list until the next sizing, as above.
 #include <vector>
 
 #include "Backend/Buffer.h"
@@ -31,11 +42,13 @@ struct PairListSizing {
   int capacity = 0;         // entries the index buffer holds
   int headroomEighths = 1;  // room made beyond the pairs counted when sizing
   bool overflowed = false;  // an item went without a list since the last sizing
+  std::vector<int> roomStart;  // keyed lists: key k's room is [roomStart[k], roomStart[k + 1]); else empty
 };
 
 class PairLists {
  public:
-  explicit PairLists(Device d) : start_(d), count_(d), index_(d), overflow_(d), device_(d) {}
+  explicit PairLists(Device d)
+      : start_(d), count_(d), index_(d), overflow_(d), roomCount_(d), roomStart_(d), spillUsed_(d), device_(d) {}
 
   // Building (PairListsBuild.h does the three steps): per-item counts to be
   // written for n items; then the offsets (with `sizeExactly`, a maintenance
@@ -52,6 +65,28 @@ class PairLists {
   };
   Fill fill();
 
+  // Keyed lists (PairListsBuild.h): whether rooms for `keys` keys are
+  // placed (else the build counts and sizes them first); on a sizing: the
+  // per-key room sizes to be written (zeroed, keys + 1 of them), then the
+  // rooms' placing (reads the total back; the spill after them takes the
+  // headroom's eighths of it). Before each fill the spill is emptied. The
+  // fill then writes each item's list into its key's room or the spill.
+  bool hasRooms(int keys) const { return roomKeys_ == keys && keys > 0; }
+  int* roomCountsFor(int keys);
+  void placeRooms();
+  void clearSpill();
+  struct RoomFill {
+    const int* roomStart;
+    int* start;
+    int* count;
+    int* index;
+    int capacity;
+    int* overflow;
+    int spillStart, spill;  // the spill area: [spillStart, spillStart + spill)
+    int* spillUsed;         // entries of it claimed in this build
+  };
+  RoomFill roomFill();
+
   PairListView view() const;
   // The index buffer's size and headroom (a download).
   PairListSizing sizing() const;
@@ -64,8 +99,14 @@ class PairLists {
   std::size_t bytes() const;
 
  private:
+  void growHeadroomIfOverflowed();
+
   Buffer<int> start_, count_, index_;
   Buffer<int> overflow_;  // 1 once an item went without a list
+  Buffer<int> roomCount_, roomStart_;  // keyed lists: per key (+ 1)
+  Buffer<int> spillUsed_;              // keyed lists: entries of the spill claimed
+  int roomKeys_ = 0;                   // keys with a room placed (0: none)
+  int roomsEnd_ = 0;                   // keyed lists: the rooms' end, where the spill starts
   int items_ = 0;
   int headroomEighths_ = 1;
   Device device_;

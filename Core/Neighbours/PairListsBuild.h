@@ -16,6 +16,7 @@
 // take 1: groups only where there are few particles; at 1M and more, 4
 // lanes made their build slower (Doc/performance.md).
 #include "Backend/ForEach.h"
+#include "Base/Atomic.h"
 #include "Neighbours/PairLists.h"
 
 namespace soak {
@@ -49,7 +50,92 @@ struct FillPairs {
     });
   }
 };
+// Keyed lists: item i's list goes into its key's room. An item whose
+// candidates outgrow the room claims room for all of them in the spill
+// area after the rooms and walks them again into it; where the spill is
+// full too it gets no list (its start is put past the buffer, so listed()
+// fails). Its count stays true either way, for the next sizing.
+template <class Candidates, class KeyOf>
+struct FillRooms {
+  Candidates candidates;
+  KeyOf keyOf;
+  PairLists::RoomFill t;
+  SOAK_INLINE void operator()(int i, const Lanes& lanes) const {
+    const int key = keyOf(i);
+    int first = t.roomStart[key];
+    const int room = t.roomStart[key + 1] - first;
+    int k = 0;
+    candidates(i, lanes, [&](bool keep, int j) {
+      const unsigned votes = laneBallot(lanes, keep);
+      const int at = k + lanesBefore(lanes, votes);
+      if (keep && at < room) t.index[first + at] = j;
+      k += voteCount(votes);
+    });
+    if (k > room) {
+      // The leader claims k entries of the spill; the others add 0.
+      const int claimed = laneSum(lanes, int(lanes.leader() ? atomicAddInt(t.spillUsed, k) : 0));
+      first = claimed + k <= t.spill ? t.spillStart + claimed : t.capacity;
+      if (first < t.capacity) {
+        int m = 0;
+        candidates(i, lanes, [&](bool keep, int j) {
+          const unsigned votes = laneBallot(lanes, keep);
+          if (keep) t.index[first + m + lanesBefore(lanes, votes)] = j;
+          m += voteCount(votes);
+        });
+      } else if (lanes.leader()) {
+        *t.overflow = 1;
+      }
+    }
+    if (!lanes.leader()) return;
+    t.count[i] = k;
+    t.start[i] = first;
+  }
+};
+
+// A key's room: its item's count now, plus a sixteenth, plus 2 (a
+// particle's count moves by one or two as its neighbours cross the reach;
+// those that grow more use the spill).
+SOAK_INLINE int roomFor(int count) { return count + count / 16 + 2; }
 }  // namespace detail
+
+// Runs f(i, lanes) over n items, with lane groups as buildPairLists chose.
+template <class F>
+void forEachListItem(Device d, int n, bool lanes, int minLanes, F f, const char* name) {
+  if (lanes)
+    forEachLanes(d, n, SOAK_LAMBDA(int i, Lanes l) { f(i, l); }, name, minLanes);
+  else
+    forEach(d, n, SOAK_LAMBDA(int i) { f(i, Lanes{}); }, name);
+}
+
+template <class Candidates>
+void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, int minLanes,
+                    const char* countName, const char* fillName);
+
+// Keyed lists (PairLists.h, rooms): keyOf(i) gives item i's key in [0,
+// keys), a different one for every item, the same from step to step. On a
+// sizing the items are counted and each key's room placed; between sizings
+// one pass fills the lists into the rooms (without rooms, as after a sizing
+// that had none, the unkeyed build, which waits for nothing either).
+template <class Candidates, class KeyOf>
+void buildKeyedPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, KeyOf keyOf,
+                         int keys, int minLanes, const char* countName, const char* fillName) {
+  if (!sizeExactly && !lists.hasRooms(keys)) {
+    buildPairLists(d, lists, n, false, candidates, minLanes, countName, fillName);
+    return;
+  }
+  const bool lanes = minLanes > 0 && lanesFor(n, minLanes) > 1;
+  int* counts = lists.countsFor(n);
+  if (sizeExactly) {
+    const detail::CountPairs<Candidates> count{candidates, counts};
+    forEachListItem(d, n, lanes, minLanes, count, countName);
+    int* room = lists.roomCountsFor(keys);
+    forEach(d, n, SOAK_LAMBDA(int i) { room[keyOf(i)] = detail::roomFor(counts[i]); }, "lists.rooms");
+    lists.placeRooms();
+  }
+  lists.clearSpill();
+  const detail::FillRooms<Candidates, KeyOf> fill{candidates, keyOf, lists.roomFill()};
+  forEachListItem(d, n, lanes, minLanes, fill, fillName);
+}
 
 template <class Candidates>
 void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, int minLanes,

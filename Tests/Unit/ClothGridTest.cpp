@@ -144,3 +144,96 @@ TEST(ClothNeighbours, ListsHoldTheGridsPairsInItsOrderAndGiveTheSameVolumes) {
     EXPECT_EQ(viaFallback[i], viaGrid[i]) << "cloth particle " << v;
   }
 }
+
+TEST(ClothNeighbours, BetweenSizingsListsFillTheirVertexRoomsOrWalkTheGrid) {
+  // Keyed lists (Neighbours/PairLists.h): a sizing gives every vertex a
+  // room; a build between sizings fills each list into its vertex's room
+  // in one pass. Here every other vertex's room is taken away and the spill
+  // after the rooms holds 200 entries: the first of those vertices to
+  // finish put their lists there, the others get none (and walk the grid),
+  // the rest keep the same lists as an exact build, and the volumes come
+  // out with the same bits either way.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Cloth origin='-0.2 0.6 -0.2' width='0.4' height='0.4' cellsU='24' cellsV='24' "
+      "pinCorners='u0v0 u1v0'/></Scene>",
+      Device::Cpu, reg);
+  // A sheet swinging down from two corners: its particles cross cells at
+  // different times (so the slots' order changes), its pairs hardly change.
+  for (int s = 0; s < 10; ++s) sim->step();
+  ClothNeighbours lists(Device::Cpu);
+  {
+    const ClothView c = sim->cloth.view();
+    lists.build(sim->particles.view(), sim->cloth.grid(), clothSlots(c), c.thickness, true);
+  }
+  const PairListSizing sized = lists.sizing();
+  std::vector<int> itemOfVertex(sim->cloth.vertexCount());
+  {
+    const ClothSlots before = clothSlots(sim->cloth.view());
+    for (int v = 0; v < before.count; ++v) itemOfVertex[sim->particles.view().id[before.slot[v]]] = v;
+  }
+  const int vertices = sim->cloth.vertexCount();
+  ASSERT_EQ(int(sized.roomStart.size()), vertices + 1);
+  EXPECT_EQ(sized.headroomEighths, 1);
+  // Rooms as sized, then every even vertex's taken away.
+  PairListSizing cut = sized;
+  for (int k = 0, at = 0; k < vertices; ++k) {
+    const int room = sized.roomStart[k + 1] - sized.roomStart[k];
+    EXPECT_GE(room, 2);
+    cut.roomStart[k] = at;
+    at += k % 2 == 0 ? 0 : room;
+    cut.roomStart[k + 1] = at;
+  }
+  cut.capacity = cut.roomStart[vertices] + 200;
+  // The sheet moves on (its slots reordered) before the next build.
+  for (int s = 0; s < 3; ++s) sim->step();
+  const ParticleView p = sim->particles.view();
+  const ClothView c = sim->cloth.view();
+  const ClothSlots cloth = clothSlots(c);
+  const GridView g = sim->cloth.grid();
+  ClothNeighbours exact(Device::Cpu);
+  exact.build(p, g, cloth, c.thickness, true);
+  const std::vector<std::vector<int>> exactLists = exact.download();
+  lists.setSizing(cut);
+  lists.build(p, g, cloth, c.thickness, false);
+  const std::vector<std::vector<int>> roomLists = lists.download();
+  int without = 0, spilled = 0, with = 0, outgrown = 0, moved = 0;
+  std::vector<float> viaRooms(p.count, -1.f), viaGrid(p.count, -1.f);
+  computeClothVolumes(Device::Cpu, p, g, cloth, viaGrid.data());
+  for (int v = 0; v < cloth.count; ++v) {
+    const int i = cloth.slot[v];
+    const int vertex = p.id[i];
+    moved += itemOfVertex[vertex] != v ? 1 : 0;
+    if (vertex % 2 == 0 && !exactLists[v].empty()) {
+      if (lists.view().lists.listed(v)) {
+        EXPECT_EQ(roomLists[v], exactLists[v]) << "vertex " << vertex << " (spilled)";
+        EXPECT_GE(lists.view().lists.start[v], cut.roomStart[vertices]);
+        ++spilled;
+      } else {
+        ++without;
+      }
+    } else if (int(exactLists[v].size()) > cut.roomStart[vertex + 1] - cut.roomStart[vertex]) {
+      EXPECT_FALSE(lists.view().lists.listed(v)) << "vertex " << vertex << " outgrew its room but has a list";
+      ++outgrown;
+    } else {
+      EXPECT_TRUE(lists.view().lists.listed(v)) << "vertex " << vertex;
+      EXPECT_EQ(roomLists[v], exactLists[v]) << "vertex " << vertex;
+      ++with;
+    }
+    viaRooms[i] = clothVolumeOf(p, i, v, Lanes{}, ClothListWalk{lists.view()});
+    EXPECT_EQ(viaRooms[i], viaGrid[i]) << "vertex " << vertex;
+  }
+  std::printf("keyed lists: of %d vertices %d without a room spilled, %d got no list, %d outgrew theirs, %d "
+              "listed in their rooms; %d changed item\n", cloth.count, spilled, without, outgrown, with, moved);
+  EXPECT_EQ(lists.itemsWithoutList(), without + outgrown);
+  EXPECT_GE(spilled, 1);
+  EXPECT_GT(without, cloth.count / 4);
+  EXPECT_GT(moved, cloth.count / 10);  // the rooms follow the vertices, not the items
+  EXPECT_GT(with, 4 * outgrown);  // a falling sheet keeps its pairs
+  // The next sizing lists everyone again, with twice the headroom (items
+  // went without a list since the last one).
+  lists.build(p, g, cloth, c.thickness, true);
+  EXPECT_EQ(lists.itemsWithoutList(), 0);
+  EXPECT_EQ(lists.download(), exactLists);
+  EXPECT_EQ(lists.sizing().headroomEighths, 2);
+}
