@@ -9,6 +9,7 @@
 
 #include "Cloth/ClothNeighbours.h"
 #include "Cloth/ClothVolume.h"
+#include "Neighbours/PairListsState.h"
 #include "Neighbours/GridView.h"
 #include "Support/TestScenes.h"
 
@@ -236,4 +237,34 @@ TEST(ClothNeighbours, BetweenSizingsListsFillTheirVertexRoomsOrWalkTheGrid) {
   EXPECT_EQ(lists.itemsWithoutList(), 0);
   EXPECT_EQ(lists.download(), exactLists);
   EXPECT_EQ(lists.sizing().headroomEighths, 2);
+}
+
+TEST(ClothNeighbours, CheckpointsKeepTheRoomsAndRefuseRoomsOutOfRange) {
+  // Which vertices get a list between sizings depends on their rooms: a
+  // resumed run must have the same ones (Neighbours/PairListsState.h).
+  PairListSizing s;
+  s.capacity = 40;
+  s.headroomEighths = 2;
+  s.overflowed = true;
+  s.roomStart = {0, 5, 5, 17, 30};
+  const auto roundTrip = [](const PairListSizing& in) {
+    StateWriter out;
+    putListSizing(out, in);
+    StateReader reader(out.bytes().data(), out.bytes().size(), "test");
+    return getListSizing(reader, "cloth neighbour list");
+  };
+  const PairListSizing back = roundTrip(s);
+  EXPECT_EQ(back.capacity, 40);
+  EXPECT_EQ(back.headroomEighths, 2);
+  EXPECT_TRUE(back.overflowed);
+  EXPECT_EQ(back.roomStart, s.roomStart);
+  PairListSizing shrinking = s;
+  shrinking.roomStart = {0, 5, 4, 17, 30};
+  EXPECT_THROW(roundTrip(shrinking), std::exception);
+  PairListSizing pastBuffer = s;
+  pastBuffer.roomStart = {0, 5, 5, 17, 41};
+  EXPECT_THROW(roundTrip(pastBuffer), std::exception);
+  PairListSizing unkeyed = s;
+  unkeyed.roomStart.clear();
+  EXPECT_TRUE(roundTrip(unkeyed).roomStart.empty());
 }
