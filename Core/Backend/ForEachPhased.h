@@ -56,48 +56,6 @@ __global__ void soakPhasedKernel(PhaseList phases, F f) {
       grid.sync();
     }
 }
-
-// The same walk without the barriers, f(k, r) waiting for its own inputs.
-template <class F>
-__global__ void soakInTurnsKernel(PhaseList phases, F f) {
-  const int first = blockIdx.x * blockDim.x + threadIdx.x, stride = gridDim.x * blockDim.x;
-  for (int r = 0; r < phases.repeat; ++r)
-    for (int p = 0; p < phases.count; ++p)
-      for (int k = phases.start[p] + first; k < phases.start[p + 1]; k += stride) f(k, r);
-}
-
-// Launches kernel(phases, f) cooperatively (all its blocks resident at once),
-// as many blocks of kForEachBlockSize threads as the widest phase fills, at
-// most as many as fit on the GPU. False where a cooperative launch is
-// refused; `maxBlocks` (the caller's, per kernel) is then 0 and stays so.
-template <class F>
-bool launchCooperatively(void (*kernel)(PhaseList, F), const PhaseList& phases, F& f, int& maxBlocks,
-                         const char* what) {
-  // 256 threads a block: 128 was within 3 % on fig9b and fig6b, 512 and
-  // 1024 were 12-15 % slower (H100, Doc/performance.md).
-  constexpr int blockSize = kForEachBlockSize;
-  if (maxBlocks < 0) {
-    int perSm = 0, sms = 0, dev = 0, cooperative = 0;
-    cudaGetDevice(&dev);
-    cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, dev);
-    cudaDeviceGetAttribute(&cooperative, cudaDevAttrCooperativeLaunch, dev);
-    cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, kernel, blockSize, 0);
-    maxBlocks = cooperative ? perSm * sms : 0;
-  }
-  const int blocks = std::min((phases.widest() + blockSize - 1) / blockSize, maxBlocks);
-  if (blocks <= 0) return false;
-  PhaseList list = phases;
-  void* args[] = {static_cast<void*>(&list), static_cast<void*>(&f)};
-  if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(kernel), dim3(blocks), dim3(blockSize), args, 0,
-                                  nullptr) != cudaSuccess) {
-    cudaGetLastError();  // clear the refusal; the caller falls back
-    maxBlocks = 0;
-    return false;
-  }
-  checkLastLaunch(Device::Cuda, what);
-  countLaunch();
-  return true;
-}
 #endif
 
 template <class F>
@@ -105,9 +63,33 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
   if (phases.count == 0 || phases.repeat <= 0) return;
   if (device == Device::Cuda) {
 #if defined(__CUDACC__)
-    if (phases.widest() == 0) return;
+    const int widest = phases.widest();
+    if (widest == 0) return;
+    // 256 threads a block: 128 was within 3 % on fig9b and fig6b, 512 and
+    // 1024 were 12-15 % slower (H100, Doc/performance.md).
+    constexpr int blockSize = kForEachBlockSize;
     static int maxBlocks = -1;  // co-resident blocks of this kernel on this GPU
-    if (launchCooperatively(soakPhasedKernel<F>, phases, f, maxBlocks, what)) return;
+    if (maxBlocks < 0) {
+      int perSm = 0, sms = 0, dev = 0, cooperative = 0;
+      cudaGetDevice(&dev);
+      cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, dev);
+      cudaDeviceGetAttribute(&cooperative, cudaDevAttrCooperativeLaunch, dev);
+      cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, soakPhasedKernel<F>, blockSize, 0);
+      maxBlocks = cooperative ? perSm * sms : 0;
+    }
+    const int blocks = std::min((widest + blockSize - 1) / blockSize, maxBlocks);
+    if (blocks > 0) {
+      PhaseList list = phases;
+      void* args[] = {static_cast<void*>(&list), static_cast<void*>(&f)};
+      if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(soakPhasedKernel<F>), dim3(blocks),
+                                      dim3(blockSize), args, 0, nullptr) == cudaSuccess) {
+        checkLastLaunch(device, what);
+        countLaunch();
+        return;
+      }
+      cudaGetLastError();  // clear the refusal; fall back below
+      maxBlocks = 0;
+    }
 #endif
   }
   if (device == Device::Cpu) {
@@ -126,44 +108,6 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
     for (int p = 0; p < phases.count; ++p) {
       const int first = phases.start[p];
       forEach(device, phases.start[p + 1] - first, SOAK_LAMBDA(int k) { f(first + k); }, what);
-    }
-}
-
-// forEachPhasedInTurns(device, phases, f): calls f(k, r) for every k of
-// every phase in round r of `repeat`, where f waits for the items of earlier
-// phases (or rounds) that it reads from and lets later ones know when it is
-// done (Base/Turns.h). On the GPU one cooperative launch without barriers:
-// a thread goes on to its next phase's items at once, and each item waits
-// only for the few it depends on, not for the slowest of a whole phase and a
-// grid-wide barrier (Doc/performance.md). Every thread runs its items in
-// phase order and all blocks are resident, so the earliest unfinished item
-// can always go on. On the CPU, and on a GPU that refuses the cooperative
-// launch, the phases run one after the other as in forEachPhased; f's waits
-// are then over at once.
-template <class F>
-void forEachPhasedInTurns(Device device, const PhaseList& phases, F f, const char* what = "forEachPhasedInTurns") {
-  if (phases.count == 0 || phases.repeat <= 0) return;
-  if (device == Device::Cuda) {
-#if defined(__CUDACC__)
-    if (phases.widest() == 0) return;
-    static int maxBlocks = -1;  // co-resident blocks of this kernel on this GPU
-    if (launchCooperatively(soakInTurnsKernel<F>, phases, f, maxBlocks, what)) return;
-#endif
-  }
-  if (device == Device::Cpu) {
-    countLaunch();
-    for (int r = 0; r < phases.repeat; ++r)
-      for (int p = 0; p < phases.count; ++p) {
-        const int first = phases.start[p], end = phases.start[p + 1];
-#pragma omp parallel for schedule(static)
-        for (int k = first; k < end; ++k) f(k, r);
-      }
-    return;
-  }
-  for (int r = 0; r < phases.repeat; ++r)
-    for (int p = 0; p < phases.count; ++p) {
-      const int first = phases.start[p];
-      forEach(device, phases.start[p + 1] - first, SOAK_LAMBDA(int k) { f(first + k, r); }, what);
     }
 }
 

@@ -3,7 +3,6 @@
 #include "Backend/ForEach.h"
 #include "Backend/ForEachPhased.h"
 #include "Base/ReadOnly.h"
-#include "Base/Turns.h"
 #include "Physics/Collider.h"
 
 namespace soak {
@@ -32,87 +31,46 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
   for (std::size_t col = 0; col + 1 < bendColours.size(); ++col)
     fits = fits && phases.add(bendBase + bendColours[col], bendBase + bendColours[col + 1]);
   if (!fits) throw std::logic_error("cloth solve: more constraint colours than kMaxPhases");
-  if (iterations > kMaxTurnRounds) c.vertexProgress = nullptr;  // the counters would overflow
   // The solve works on a copy of the predicted positions in vertex order:
   // constraints name vertices, so each load is one indirection shorter than
   // through the particle slots, and neighbouring vertices share cache lines.
   Float4* x = c.vertexScratch;
-  int* progress = c.vertexProgress;  // null: a barrier after every colour
-  forEach(d, vertices, SOAK_LAMBDA(int v) {
-    x[v] = p.predicted[c.vertexSlot[v]];
-    if (progress) progress[v] = 0;
-  }, "cloth.constraints.gather");
-  // Constraint k in iteration `round`. In turns (Base/Turns.h), it waits
-  // until the constraints before it on its vertices are done and then lets
-  // the next ones know; each vertex sees the same sequence of projections as
-  // with barriers, so the results are the same.
-  auto project = SOAK_LAMBDA(int k, int round) {
+  forEach(d, vertices, SOAK_LAMBDA(int v) { x[v] = p.predicted[c.vertexSlot[v]]; }, "cloth.constraints.gather");
+  forEachPhased(d, phases, SOAK_LAMBDA(int k) {
     if (k < edgeBase) {
-      // Tethers: unilateral, only the free vertex moves (its pins, inverse
-      // mass 0, never move during the solve). The pins, their lengths and
-      // positions are loaded before the sequential projections, so the
-      // loads overlap.
+      // Tethers: unilateral, only the free vertex moves (its pins do not).
+      // The pins, their lengths and positions are loaded before the
+      // sequential projections, so the loads overlap.
       const int v = k;
       const TetherPins pins = loadReadOnly(reinterpret_cast<const TetherPins*>(c.tetherPin) + v);
-      if (pins.pin[0] < 0) return;  // no tether: not one of v's turns
+      const Float4 xv = x[v];
+      if (xv.w == 0.f || pins.pin[0] < 0) return;
       const TetherLengths lengths = loadReadOnly(reinterpret_cast<const TetherLengths*>(c.tetherLength) + v);
       Vec3 anchor[kTethers];
       for (int t = 0; t < kTethers; ++t)
         if (pins.pin[t] >= 0) anchor[t] = x[pins.pin[t]].xyz();
-      int turn = 0;
-      if (progress) {
-        const std::uint32_t t = loadReadOnly(c.tetherTurns + v);
-        turn = turnInRound(t, round);
-        waitForTurns(progress, &v, &turn, 1);
-        turn = turnAfter(t, round);
+      Vec3 q = xv.xyz();
+      for (int t = 0; t < kTethers; ++t) {
+        if (pins.pin[t] < 0) break;
+        const Vec3 dd = q - anchor[t];
+        const float len = length(dd), maxLen = lengths.length[t];
+        if (len > maxLen) q = anchor[t] + dd * (maxLen / len);
       }
-      const Float4 xv = x[v];
-      if (xv.w != 0.f) {
-        Vec3 q = xv.xyz();
-        for (int t = 0; t < kTethers; ++t) {
-          if (pins.pin[t] < 0) break;
-          const Vec3 dd = q - anchor[t];
-          const float len = length(dd), maxLen = lengths.length[t];
-          if (len > maxLen) q = anchor[t] + dd * (maxLen / len);
-        }
-        x[v] = Float4(q, xv.w);
-      }
-      if (progress) passTurns(progress, &v, &turn, 1);
+      x[v] = Float4(q, xv.w);
     } else if (k < bendBase) {
       // Stretch (Eq. 8).
       const int e = k - edgeBase;
       const ClothEdge edge = loadReadOnly(c.edges + e);
-      const int at[2] = {edge.a, edge.b};
-      int turn[2] = {0, 0}, next[2] = {0, 0};
-      if (progress) {
-        const std::uint32_t t = loadReadOnly(c.edgeTurns + e);
-        turn[0] = turnInRound(lowTurn(t), round);
-        turn[1] = turnInRound(highTurn(t), round);
-        next[0] = turnAfter(lowTurn(t), round);
-        next[1] = turnAfter(highTurn(t), round);
-        waitForTurns(progress, at, turn, 2);
-      }
       const Float4 xa = x[edge.a], xb = x[edge.b];
       Vec3 da, db;
       projectStretch(xa.xyz(), xa.w, xb.xyz(), xb.w, loadReadOnly(c.edgeRest + e), loadReadOnly(c.edgeStiffness + e), dt,
                      c.edgeLambda[e], da, db);
       x[edge.a] = Float4(xa.xyz() + da, xa.w);
       x[edge.b] = Float4(xb.xyz() + db, xb.w);
-      if (progress) passTurns(progress, at, next, 2);
     } else {
       // Bending (Eq. 9).
       const int b = k - bendBase;
       const ClothBend bend = loadReadOnly(c.bends + b);
-      int turn[4] = {0, 0, 0, 0}, next[4] = {0, 0, 0, 0};
-      if (progress) {
-        const BendTurns t = loadReadOnly(c.bendTurns + b);
-        for (int a = 0; a < 4; ++a) {
-          const std::uint32_t word = t.word[a / 2], ta = a % 2 == 0 ? lowTurn(word) : highTurn(word);
-          turn[a] = turnInRound(ta, round);
-          next[a] = turnAfter(ta, round);
-        }
-        waitForTurns(progress, bend.v, turn, 4);
-      }
       Vec3 q[4], dx[4];
       float w[4];
       for (int a = 0; a < 4; ++a) {
@@ -122,13 +80,8 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
       }
       projectBend(q, w, loadReadOnly(c.bendRest + b), loadReadOnly(c.bendStiffness + b), dt, c.bendLambda[b], dx);
       for (int a = 0; a < 4; ++a) x[bend.v[a]] = Float4(q[a] + dx[a], w[a]);
-      if (progress) passTurns(progress, bend.v, next, 4);
     }
-  };
-  if (progress)
-    forEachPhasedInTurns(d, phases, project, "cloth.constraints");
-  else
-    forEachPhased(d, phases, SOAK_LAMBDA(int k) { project(k, 0); }, "cloth.constraints");
+  }, "cloth.constraints");
   forEach(d, vertices, SOAK_LAMBDA(int v) { p.predicted[c.vertexSlot[v]] = x[v]; }, "cloth.constraints.scatter");
 }
 

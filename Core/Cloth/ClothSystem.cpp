@@ -13,8 +13,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dTetherTurns_(device), dEdgeTurns_(device), dBendTurns_(device), dVertexProgress_(device),
-      dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -108,13 +107,11 @@ void ClothSystem::upload() {
   edgeColourStart_ = ec.colourStart.empty() ? std::vector<int>{0} : ec.colourStart;
   bendColourStart_ = bc.colourStart.empty() ? std::vector<int>{0} : bc.colourStart;
 
-  const std::vector<ClothEdge> edges = permuted(edges_, ec.order);
-  const std::vector<ClothBend> bends = permuted(bends_, bc.order);
-  dEdges_.upload(edges);
+  dEdges_.upload(permuted(edges_, ec.order));
   dEdgeRest_.upload(permuted(edgeRest_, ec.order));
   dEdgeStiffness_.upload(permuted(edgeStiffness_, ec.order));
   dEdgeLambda_.resize(edges_.size());
-  dBends_.upload(bends);
+  dBends_.upload(permuted(bends_, bc.order));
   dBendRest_.upload(permuted(bendRest_, bc.order));
   dBendStiffness_.upload(permuted(bendStiffness_, bc.order));
   dBendLambda_.resize(bends_.size());
@@ -146,17 +143,6 @@ void ClothSystem::upload() {
   dTetherPin_.upload(tetherPin_);
   anyTethers_ = std::any_of(tetherPin_.begin(), tetherPin_.end(), [](int pin) { return pin >= 0; });
   dTetherLength_.upload(tetherLength_);
-  std::vector<char> tethered(std::size_t(nv), 0);
-  for (int v = 0; v < nv; ++v) tethered[v] = tetherPin_[std::size_t(v) * kTethers] >= 0 ? 1 : 0;
-  std::vector<int> edgeVertices, bendVertices;
-  for (const ClothEdge& e : edges) edgeVertices.insert(edgeVertices.end(), {e.a, e.b});
-  for (const ClothBend& b : bends) bendVertices.insert(bendVertices.end(), {b.v[0], b.v[1], b.v[2], b.v[3]});
-  const ConstraintTurns turns = constraintTurns(nv, tethered, edgeVertices, bendVertices);
-  turnsFit_ = turns.fits;
-  dTetherTurns_.upload(turns.tether);
-  dEdgeTurns_.upload(turns.edge);
-  dBendTurns_.upload(turns.bend);
-  dVertexProgress_.resize(std::size_t(nv));
   dSlot_.resize(nv);
   dVertexScratch_.resize(nv);
   dClothSlots_.resize(nv);
@@ -188,12 +174,6 @@ ClothView ClothSystem::view() {
   v.tetherPin = dTetherPin_.data();
   v.anyTethers = anyTethers_;
   v.tetherLength = dTetherLength_.data();
-  if (inTurns()) {
-    v.tetherTurns = dTetherTurns_.data();
-    v.edgeTurns = dEdgeTurns_.data();
-    v.bendTurns = dBendTurns_.data();
-    v.vertexProgress = dVertexProgress_.data();
-  }
   v.vertexSlot = dSlot_.data();
   v.vertexScratch = dVertexScratch_.data();
   v.clothSlots = dClothSlots_.data();

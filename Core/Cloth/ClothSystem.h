@@ -10,7 +10,6 @@
 #include "Backend/Buffer.h"
 #include "Cloth/ClothConstraints.h"
 #include "Cloth/ClothTopology.h"
-#include "Cloth/ConstraintTurns.h"
 #include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"
 
@@ -92,13 +91,6 @@ struct ClothView {
   const int* tetherPin = nullptr;
   const float* tetherLength = nullptr;
   bool anyTethers = false;  // some vertex has a tether
-  // The constraints' turns on their vertices (Cloth/ConstraintTurns.h) and a
-  // counter per vertex, for the solve in turns; vertexProgress is null where
-  // the solve runs with a barrier after every colour instead.
-  const std::uint32_t* tetherTurns = nullptr;  // per vertex
-  const std::uint32_t* edgeTurns = nullptr;    // per edge
-  const BendTurns* bendTurns = nullptr;        // per bend
-  int* vertexProgress = nullptr;               // per vertex
   int vertexCount = 0, edgeCount = 0, bendCount = 0, triangleCount = 0;
   float maxEdgeLength = 0.f;  // longest rest edge of any cloth (bounds a triangle's reach from its vertices)
   float maxThickness = 0.f;   // largest thickness of any cloth
@@ -154,18 +146,10 @@ class ClothSystem {
   // cloth particles in the same order as through the full grid, without
   // stepping over the water around them.
   GridView grid() const { return clothGrid_; }
-  // The constraint solve's schedule: in turns (each constraint waits for the
-  // constraints before it on its own vertices; the default) or with a
-  // barrier after every colour. Same results; soak-bench compares the two.
-  void scheduleInTurns(bool on) { inTurns_ = on; }
-  bool inTurns() const { return inTurns_ && turnsFit_; }
   // Zeroes the XPBD multipliers (start of each step).
   void resetMultipliers();
   // Largest relative edge strain |l - l0| / l0 over all edges.
   float maxStretch(ParticleView p);
-  // Host copy of the turn counters after the last solve in turns (per
-  // vertex; Base/Turns.h): for tests and diagnostics.
-  std::vector<int> downloadVertexProgress() const { return dVertexProgress_.download(); }
   // Host copy of the positions of one cloth's vertices, in vertex order.
   std::vector<Vec3> downloadVertexPositions(const ParticleState& particles, int clothIndex) const;
 
@@ -203,10 +187,6 @@ class ClothSystem {
   Buffer<Float4> dVertexScratch_;
   Buffer<int> dClothFlag_, dClothOffset_, dClothSlots_;  // per particle, per particle, per vertex
   bool anyTethers_ = false;  // some vertex has a tether (set by upload())
-  Buffer<std::uint32_t> dTetherTurns_, dEdgeTurns_;
-  Buffer<BendTurns> dBendTurns_;
-  Buffer<int> dVertexProgress_;
-  bool inTurns_ = true, turnsFit_ = false;
   Buffer<BucketRange> dGridRange_;  // the cloth grid: per bucket
   Buffer<std::uint32_t> dGridKey_;  // the cloth grid: per vertex
   Buffer<std::uint32_t> dGridNear_;  // the cloth grid: near bits, one per bucket
