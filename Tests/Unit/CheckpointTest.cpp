@@ -32,8 +32,11 @@ const char* kScene = R"(<Scene>
 </Scene>
 )";
 
+// One file per test: ctest runs tests in parallel processes, and a file
+// shared between them could be read by one while another rewrites it.
 std::string sceneFile() {
-  const std::string path = ::testing::TempDir() + "soak_checkpoint_scene.xml";
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string path = ::testing::TempDir() + "soak_checkpoint_" + test + ".xml";
   writeWholeFile(path, kScene);
   return path;
 }
