@@ -98,9 +98,12 @@ Checkpoint Checkpoint::read(const std::string& path) {
 
 void Checkpoint::restore(FrameWriter& writer, Simulation& sim) const {
   StateReader in(payload_.data() + stateOffset_, payload_.size() - stateOffset_, path_);
-  writer.loadState(in);
+  // Everything is read and checked before the output folder is touched: a
+  // refused resume leaves the run it refuses as it was.
+  const FrameWriter::ResumeState output = writer.readResumeState(in);
   sim.loadState(in);
   if (!in.atEnd()) in.fail("it holds more state than this scene reads");
+  writer.resume(output);
 }
 
 }  // namespace soak

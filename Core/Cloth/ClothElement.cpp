@@ -99,8 +99,8 @@ void registerClothElement(ModuleRegistry& r) {
                     "A piece of cloth: a triangle mesh from an OBJ file, or a generated rectangular sheet of "
                     "(cellsU + 1) x (cellsV + 1) vertices. Each vertex is a cloth particle (Section 3.2).",
                     "Cloth")
-            .text("name", "cloth", "Name (output file cloth_<name>.pvd); unique per scene.")
-            .text("mesh", "", "OBJ file (relative to the scene); empty: a generated sheet.")
+            .fileSafeName("name", "cloth", "Name (output file cloth_<name>.pvd); unique per scene.")
+            .inputFile("mesh", "", "OBJ file (relative to the scene); empty: a generated sheet.")
             .vector("translate", "m", "0 0 0", "Mesh only: translation applied after scaling.")
             .real("scale", "", "1", "Mesh only: uniform scale.", 0.0, 1e6, true)
             .vector("origin", "m", "-0.6 1 -0.6", "Sheet only: corner u0v0.")

@@ -34,8 +34,8 @@ void makeDirectories(const std::string& path) {
 
 FrameWriter::FrameWriter(const std::string& directory, const std::string& sceneText, Start start)
     : dir_(directory), water_(directory + "/water.pvd") {
-  makeDirectories(dir_ + "/water");
   if (start == Start::Resume) return;
+  makeDirectories(dir_ + "/water");
   writeFileAtomically(dir_ + "/scene.xml", sceneText);
   stats_.open(dir_ + "/stats.csv", std::ios::out | std::ios::trunc);
   if (!stats_) throw InputError("cannot write '" + dir_ + "/stats.csv'");

@@ -25,7 +25,7 @@ class FrameWriter {
  public:
   // Fresh: creates the folder (InputError if it cannot be written), writes
   // scene.xml and starts stats.csv. Resume: the folder of an earlier run;
-  // nothing is touched until loadState() restores the writer's state.
+  // nothing is touched until resume() applies a checked ResumeState.
   enum class Start { Fresh, Resume };
   FrameWriter(const std::string& directory, const std::string& sceneText, Start start = Start::Fresh);
   void writeFrame(Simulation& sim, int frame, double stepMs);
@@ -33,11 +33,26 @@ class FrameWriter {
   int framesWritten() const { return frames_; }
 
   // Checkpoints: the .pvd lists, the stats columns and how much of
-  // stats.csv belongs to the saved frames. loadState rewrites the .pvd
-  // files and cuts stats.csv back to that length, so frames written after
-  // the checkpoint are dropped from both and then written again.
+  // stats.csv belongs to the saved frames.
   void saveState(StateWriter& out) const;
-  void loadState(StateReader& in);
+  // What a checkpoint says the folder held at its frame.
+  struct ResumeState {
+    int frames = 0;
+    std::vector<PvdCollection::Entry> water;
+    std::vector<std::pair<std::string, std::vector<PvdCollection::Entry>>> cloth;  // collection file, entries
+    bool surface = false;
+    std::vector<PvdCollection::Entry> surfaceEntries;
+    std::vector<std::string> statsColumns;
+    std::uint64_t statsBytes = 0;
+  };
+  // Reads the writer's part of a checkpoint and checks it against the
+  // folder (stats.csv at least as long as then, every listed frame file
+  // present) without changing anything: InputError if it does not fit.
+  ResumeState readResumeState(StateReader& in) const;
+  // Applies a checked state: rewrites the .pvd files and cuts stats.csv
+  // back, so frames written after the checkpoint are dropped from both and
+  // then written again. Called only once every other check has passed.
+  void resume(const ResumeState& state);
 
  private:
   void writeStatsRow(const StatsRow& row);

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "Base/SafeName.h"
 #include "Checkpoint/StateStream.h"
 #include "Output/FrameWriter.h"
 
@@ -46,33 +47,74 @@ void FrameWriter::saveState(StateWriter& out) const {
   out.put<std::uint64_t>(statsBytes_);
 }
 
-void FrameWriter::loadState(StateReader& in) {
+namespace {
+bool isRegularFile(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+}  // namespace
+
+FrameWriter::ResumeState FrameWriter::readResumeState(StateReader& in) const {
+  ResumeState s;
   in.expect("output");
-  frames_ = in.get<std::int32_t>();
-  water_.restore(getEntries(in));
+  s.frames = in.get<std::int32_t>();
+  if (s.frames < 0) in.fail("negative frame count");
+  s.water = getEntries(in);
   const int cloths = in.get<std::int32_t>();
-  cloth_.clear();
+  if (cloths < 0) in.fail("negative cloth count");
   for (int k = 0; k < cloths; ++k) {
     const std::string name = in.getString();
-    if (name.find('/') != std::string::npos || name.find("..") != std::string::npos) in.fail("bad collection name");
-    cloth_.push_back(std::make_unique<PvdCollection>(dir_ + "/" + name));
-    cloth_.back()->restore(getEntries(in));
+    if (!isSafeFileName(name)) in.fail("bad collection name");
+    s.cloth.emplace_back(name, getEntries(in));
+  }
+  s.surface = in.get<std::int32_t>() != 0;
+  if (s.surface) s.surfaceEntries = getEntries(in);
+  const int columns = in.get<std::int32_t>();
+  if (columns < 0) in.fail("negative column count");
+  for (int k = 0; k < columns; ++k) s.statsColumns.push_back(in.getString());
+  s.statsBytes = in.get<std::uint64_t>();
+
+  // The folder must still hold what the checkpoint lists.
+  const std::string stats = dir_ + "/stats.csv";
+  struct stat st {};
+  if (::stat(stats.c_str(), &st) != 0 || std::uint64_t(st.st_size) < s.statsBytes)
+    throw InputError("cannot resume: '" + stats + "' is missing or shorter than at the checkpoint");
+  if (::access(stats.c_str(), W_OK) != 0)
+    throw InputError("cannot resume: '" + stats + "' is not writable: " + std::strerror(errno));
+  auto checkFrames = [&](const std::string& folder, const std::vector<PvdCollection::Entry>& entries) {
+    for (const auto& e : entries) {
+      if (e.second.find("..") != std::string::npos || (!e.second.empty() && e.second[0] == '/'))
+        in.fail("a frame file name leaves the output folder");
+      if (!isRegularFile(folder + "/" + e.second))
+        throw InputError("cannot resume: frame file '" + folder + "/" + e.second +
+                         "', listed at the checkpoint, is missing");
+    }
+  };
+  checkFrames(dir_, s.water);
+  for (const auto& c : s.cloth) checkFrames(dir_, c.second);
+  checkFrames(dir_, s.surfaceEntries);
+  return s;
+}
+
+void FrameWriter::resume(const ResumeState& s) {
+  makeDirectories(dir_ + "/water");
+  frames_ = s.frames;
+  water_.restore(s.water);
+  cloth_.clear();
+  for (const auto& c : s.cloth) {
+    cloth_.push_back(std::make_unique<PvdCollection>(dir_ + "/" + c.first));
+    cloth_.back()->restore(c.second);
   }
   surface_.reset();
-  if (in.get<std::int32_t>() != 0) {
+  if (s.surface) {
     surface_ = std::make_unique<PvdCollection>(dir_ + "/water_surface.pvd");
-    surface_->restore(getEntries(in));
+    surface_->restore(s.surfaceEntries);
   }
-  const int columns = in.get<std::int32_t>();
-  statsColumns_.clear();
-  for (int k = 0; k < columns; ++k) statsColumns_.push_back(in.getString());
-  statsBytes_ = in.get<std::uint64_t>();
+  statsColumns_ = s.statsColumns;
+  statsBytes_ = s.statsBytes;
 
   // stats.csv: keep the rows of the saved frames, append from there.
   const std::string stats = dir_ + "/stats.csv";
-  struct stat st {};
-  if (::stat(stats.c_str(), &st) != 0 || std::uint64_t(st.st_size) < statsBytes_)
-    throw InputError("cannot resume: '" + stats + "' is missing or shorter than at the checkpoint");
   if (::truncate(stats.c_str(), static_cast<off_t>(statsBytes_)) != 0)
     throw InputError("cannot resume: cannot cut '" + stats + "' back: " + std::strerror(errno));
   stats_.close();

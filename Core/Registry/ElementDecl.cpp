@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "Base/SafeName.h"
+
 namespace soak {
 
 const char* paramTypeName(ParamType t) {
@@ -34,6 +36,8 @@ std::string ParamDecl::rangeText() const {
     return s;
   }
   if (type == ParamType::Boolean) return "true or false";
+  if (type == ParamType::Text && textKind == TextKind::Name)
+    return "letters, digits, _ - . (at most " + std::to_string(kMaxNameLength) + ", not starting with .)";
   if (type != ParamType::Real && type != ParamType::Integer) return "";
   bool lo = std::isfinite(min) && min > -1e299, hi = std::isfinite(max) && max < 1e299;
   if (type == ParamType::Integer) {
@@ -87,6 +91,14 @@ ElementDecl& ElementDecl::vector(const std::string& n, const std::string& unit, 
 }
 ElementDecl& ElementDecl::text(const std::string& n, const std::string& def, const std::string& desc, bool required) {
   addParam(params, n, ParamType::Text, "", def, desc).required = required;
+  return *this;
+}
+ElementDecl& ElementDecl::fileSafeName(const std::string& n, const std::string& def, const std::string& desc) {
+  addParam(params, n, ParamType::Text, "", def, desc).textKind = TextKind::Name;
+  return *this;
+}
+ElementDecl& ElementDecl::inputFile(const std::string& n, const std::string& def, const std::string& desc) {
+  addParam(params, n, ParamType::Text, "", def, desc).textKind = TextKind::InputFile;
   return *this;
 }
 ElementDecl& ElementDecl::choice(const std::string& n, const std::vector<std::string>& choices,

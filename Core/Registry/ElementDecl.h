@@ -40,6 +40,10 @@ struct ElementDecl {
   ElementDecl& boolean(const std::string& n, const std::string& def, const std::string& desc);
   ElementDecl& vector(const std::string& n, const std::string& unit, const std::string& def, const std::string& desc);
   ElementDecl& text(const std::string& n, const std::string& def, const std::string& desc, bool required = false);
+  // A name that becomes part of file names (letters, digits, _ - .).
+  ElementDecl& fileSafeName(const std::string& n, const std::string& def, const std::string& desc);
+  // A path of a file the run reads, relative to the scene's folder.
+  ElementDecl& inputFile(const std::string& n, const std::string& def, const std::string& desc);
   ElementDecl& choice(const std::string& n, const std::vector<std::string>& choices, const std::string& def,
                       const std::string& desc);
   ElementDecl& integerList(const std::string& n, const std::string& def, const std::string& desc);

@@ -12,6 +12,11 @@ namespace soak {
 
 enum class ParamType { Real, Integer, Boolean, Vector, Text, Choice, IntegerList };
 
+// What a Text parameter holds, for validation: free text; a name that
+// becomes part of a file name (Base/SafeName.h); a path of a file the run
+// reads (resolved from the scene's folder; the output folder may not hold it).
+enum class TextKind { Plain, Name, InputFile };
+
 const char* paramTypeName(ParamType t);
 
 struct ParamDecl {
@@ -24,6 +29,7 @@ struct ParamDecl {
   double max = std::numeric_limits<double>::infinity();
   bool minExclusive = false;  // (min, max] instead of [min, max]
   std::vector<std::string> choices;  // for Choice
+  TextKind textKind = TextKind::Plain;  // for Text
   std::string description;
 
   std::string rangeText() const;  // e.g. "(0, 1]" or "one of: a, b"

@@ -118,6 +118,7 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
                    ModuleRegistry& registry, const PluginRequest& loadPlugin) {
   Scene scene;
   scene.path_ = path;
+  scene.inputFiles_.push_back(path);
   LineIndex lines(text);
   auto where = [&](int line) { return path + ":" + std::to_string(line); };
 
@@ -153,6 +154,7 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
     if (!loadPlugin) throw InputError("<Plugin>: plugins cannot be loaded here", w);
     if (!p.empty()) {
       std::string resolved = (p[0] == '/') ? p : scene.directory() + "/" + p;
+      scene.inputFiles_.push_back(resolved);
       loadPlugin(resolved, true, w);
     } else {
       loadPlugin(name, false, w);
@@ -209,6 +211,8 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
         if (!a) throw std::logic_error("default of <" + name + "> " + p.name + " is invalid: " + error);
         throw InputError("<" + name + ">: attribute '" + p.name + "': " + error, where(line));
       }
+      if (p.type == ParamType::Text && p.textKind == TextKind::InputFile && !v.text.empty())
+        scene.inputFiles_.push_back(el.params.resolvePath(v.text));
       el.params.set(p.name, v, bool(a));
     }
     scene.elements_.push_back(std::move(el));

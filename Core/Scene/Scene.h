@@ -38,11 +38,17 @@ class Scene {
   std::string directory() const;
   // The scene as run: the file with overrides applied.
   const std::string& textAsRun() const { return textAsRun_; }
+  // The files the run reads: the scene file, its meshes (parameters declared
+  // with ElementDecl::inputFile) and plugin libraries given by path, as
+  // written or resolved from the scene's folder. The output folder may not
+  // hold them (Output/OutputFolder.h).
+  const std::vector<std::string>& inputFiles() const { return inputFiles_; }
 
  private:
   std::string path_;
   std::string textAsRun_;
   std::vector<SceneElement> elements_;
+  std::vector<std::string> inputFiles_;
 };
 
 // Resolves `file` relative to the scene's folder unless it is absolute.

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "Base/SafeName.h"
+
 namespace soak {
 
 namespace {
@@ -41,6 +43,14 @@ bool toInteger(const std::string& s, long long& v) {
   v = std::strtoll(s.c_str(), &end, 10);
   return end == s.c_str() + s.size() && errno == 0;
 }
+// A value as messages show it: long values are cut (a message never echoes
+// a megabyte of attribute back).
+std::string clip(const std::string& raw) {
+  constexpr std::size_t kShown = 60;
+  if (raw.size() <= kShown) return raw;
+  return raw.substr(0, kShown) + "... (" + std::to_string(raw.size()) + " characters)";
+}
+std::string shown(const std::string& raw) { return "'" + clip(raw) + "'"; }
 bool inRange(const ParamDecl& d, double v) {
   if (d.minExclusive ? !(v > d.min) : !(v >= d.min)) return false;
   return v <= d.max;
@@ -54,22 +64,22 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
   switch (d.type) {
     case ParamType::Real: {
       if (!toDouble(text, out.real)) {
-        error = "'" + raw + "' is not a finite number";
+        error = shown(raw) + " is not a finite number";
         return false;
       }
       if (!inRange(d, out.real)) {
-        error = "value " + text + " is out of range; allowed: " + d.rangeText();
+        error = "value " + clip(text) + " is out of range; allowed: " + d.rangeText();
         return false;
       }
       return true;
     }
     case ParamType::Integer: {
       if (!toInteger(text, out.integer)) {
-        error = "'" + raw + "' is not an integer";
+        error = shown(raw) + " is not an integer";
         return false;
       }
       if (!inRange(d, double(out.integer))) {
-        error = "value " + text + " is out of range; allowed: " + d.rangeText();
+        error = "value " + clip(text) + " is out of range; allowed: " + d.rangeText();
         return false;
       }
       return true;
@@ -78,7 +88,7 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
       if (text == "true" || text == "1" || text == "yes" || text == "on") out.boolean = true;
       else if (text == "false" || text == "0" || text == "no" || text == "off") out.boolean = false;
       else {
-        error = "'" + raw + "' is not a boolean; allowed: true or false";
+        error = shown(raw) + " is not a boolean; allowed: true or false";
         return false;
       }
       return true;
@@ -87,7 +97,7 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
       std::vector<std::string> parts = splitList(text);
       double c[3];
       if (parts.size() != 3 || !toDouble(parts[0], c[0]) || !toDouble(parts[1], c[1]) || !toDouble(parts[2], c[2])) {
-        error = "'" + raw + "' is not a vector of three finite numbers (e.g. \"0 -9.81 0\")";
+        error = shown(raw) + " is not a vector of three finite numbers (e.g. \"0 -9.81 0\")";
         return false;
       }
       out.vector = Vec3(float(c[0]), float(c[1]), float(c[2]));
@@ -95,6 +105,11 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
     }
     case ParamType::Text:
       out.text = text;
+      if (d.textKind == TextKind::Name && !(text.empty() && d.defaultValue.empty()) &&
+          !isSafeFileName(text, kMaxNameLength)) {
+        error = shown(raw) + " is not a usable name; allowed: " + d.rangeText();
+        return false;
+      }
       return true;
     case ParamType::Choice: {
       for (const std::string& c : d.choices)
@@ -102,14 +117,14 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
           out.text = text;
           return true;
         }
-      error = "'" + raw + "' is not allowed; allowed: " + d.rangeText();
+      error = shown(raw) + " is not allowed; allowed: " + d.rangeText();
       return false;
     }
     case ParamType::IntegerList: {
       for (const std::string& p : splitList(text)) {
         long long v = 0;
         if (!toInteger(p, v)) {
-          error = "'" + p + "' in '" + raw + "' is not an integer";
+          error = shown(p) + " in " + shown(raw) + " is not an integer";
           return false;
         }
         out.list.push_back(v);

@@ -1,5 +1,7 @@
 #include "Simulation/Runner.h"
 
+#include "Base/Error.h"
+
 #include <chrono>
 #include <cmath>
 
@@ -14,7 +16,12 @@ Runner::Runner(Simulation& sim, FrameWriter* writer) : sim_(sim), writer_(writer
 int Runner::plannedFrames(const RunOptions& o) const {
   if (o.frames >= 0) return o.frames;
   double t = o.time >= 0.0 ? o.time : sim_.settings.duration;
-  return static_cast<int>(std::floor(t * sim_.settings.frameRate + 1e-9));
+  const double frames = std::floor(t * sim_.settings.frameRate + 1e-9);
+  if (!(frames <= double(kMaxRunFrames)))
+    throw InputError("the run would write " + std::to_string(frames) + " frames (" + std::to_string(t) +
+                     " s at " + std::to_string(sim_.settings.frameRate) + " frames per second); at most " +
+                     std::to_string(kMaxRunFrames) + " frames per run: shorten the run or lower Simulation.frameRate");
+  return static_cast<int>(frames);
 }
 
 RunProgress Runner::run(const RunOptions& o, const std::function<void(const RunProgress&)>& onFrame) {

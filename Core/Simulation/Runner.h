@@ -10,6 +10,9 @@ namespace soak {
 class Simulation;
 class FrameWriter;
 
+// Most output frames one run may plan (--frames, --time x frameRate).
+constexpr int kMaxRunFrames = 10000000;
+
 struct RunOptions {
   int frames = -1;     // output frames after frame 0; -1: from duration
   double time = -1.0;  // simulated seconds; -1: from the scene
@@ -47,7 +50,8 @@ class Runner {
   RunProgress run(const RunOptions& options, const std::function<void(const RunProgress&)>& onFrame = {});
   // Stop after the current frame (e.g. from a signal handler flag).
   void requestStop() { stop_ = true; }
-  // Number of frames the options and scene ask for (after frame 0).
+  // Number of frames the options and scene ask for (after frame 0);
+  // InputError beyond kMaxRunFrames.
   int plannedFrames(const RunOptions& options) const;
 
  private:

@@ -1,5 +1,6 @@
 #include "Arguments.h"
 
+#include <cmath>
 #include <cstdlib>
 
 #include "Base/Error.h"
@@ -40,8 +41,16 @@ namespace {
 double toNumber(const std::string& opt, const std::string& v) {
   char* end = nullptr;
   double d = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end) throw InputError(opt + ": '" + v + "' is not a number");
+  if (v.empty() || *end || !std::isfinite(d))
+    throw InputError(opt + ": '" + v.substr(0, 60) + (v.size() > 60 ? "...'" : "'") + " is not a finite number");
   return d;
+}
+// An integer option in [lo, hi]; the message names the range.
+int toInteger(const std::string& opt, const std::string& v, int lo, int hi) {
+  const double d = toNumber(opt, v);
+  if (d != std::floor(d) || d < lo || d > hi)
+    throw InputError(opt + " must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return int(d);
 }
 }  // namespace
 
@@ -53,29 +62,21 @@ RunArguments parseRunArguments(const std::vector<std::string>& args) {
       if (i + 1 >= args.size()) throw InputError(a + " needs a value");
       return args[++i];
     };
-    if (a == "-o" || a == "--output") r.output = value();
+    if (a == "-o" || a == "--output") {
+      r.output = value();
+      if (r.output.empty()) throw InputError(a + " needs a folder name, not an empty string");
+    }
     else if (a == "--device") r.device = value();
-    else if (a == "--frames") {
-      double f = toNumber(a, value());
-      if (f < 0 || f != static_cast<int>(f)) throw InputError("--frames must be a non-negative integer");
-      r.frames = static_cast<int>(f);
-    } else if (a == "--time") {
+    else if (a == "--frames") r.frames = toInteger(a, value(), 0, kMaxFrames);
+    else if (a == "--time") {
       r.time = toNumber(a, value());
       if (!(r.time >= 0)) throw InputError("--time must be >= 0");
     } else if (a == "--set") r.overrides.push_back(value());
     else if (a == "--plugin") r.plugins.push_back(value());
-    else if (a == "--threads") {
-      double t = toNumber(a, value());
-      if (t < 1 || t != static_cast<int>(t)) throw InputError("--threads must be a positive integer");
-      r.threads = static_cast<int>(t);
-    } else if (a == "--profile") r.profile = true;
+    else if (a == "--threads") r.threads = toInteger(a, value(), 1, kMaxThreads); else if (a == "--profile") r.profile = true;
     else if (a == "--quiet" || a == "-q") r.quiet = true;
     else if (a == "--check-stages") r.checkStages = true;
-    else if (a == "--checkpoint-every") {
-      double n = toNumber(a, value());
-      if (n < 1 || n != static_cast<int>(n)) throw InputError("--checkpoint-every must be a positive integer");
-      r.checkpointEvery = static_cast<int>(n);
-    } else if (a == "--resume") r.resume = value();
+    else if (a == "--checkpoint-every") r.checkpointEvery = toInteger(a, value(), 1, kMaxFrames); else if (a == "--resume") r.resume = value();
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see soak help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene per run)");

@@ -14,6 +14,10 @@ enum ExitCode {
   kExitInterrupted = 130,
 };
 
+// Limits of the run options (Doc/reliability.md, "Resource limits").
+constexpr int kMaxFrames = 10000000;  // frames of one run (--frames, --checkpoint-every); Runner.h's kMaxRunFrames
+constexpr int kMaxThreads = 1024;     // --threads
+
 struct RunArguments {
   std::string scene;
   std::string output;      // empty: soak-out/<scene stem>

@@ -13,6 +13,7 @@
 #include "Base/Error.h"
 #include "Checkpoint/Checkpoint.h"
 #include "Output/FrameWriter.h"
+#include "Output/OutputFolder.h"
 #include "Plugins/PluginLoader.h"
 #include "ProgressReport.h"
 #include "Scene/Scene.h"
@@ -117,15 +118,18 @@ int runCommand(const RunArguments& args) {
     if (options.checkpointEvery == 0) options.checkpointEvery = h.checkpointEvery;
   }
   options.checkpointHeader.checkpointEvery = options.checkpointEvery;
+  std::vector<std::string> clothNames;
+  for (const ClothObject& c : sim.cloth.objects()) clothNames.push_back(c.name);
+  checkOutputFolder(out, scene.inputFiles(), clothNames);
+  const int planned = Runner(sim, nullptr).plannedFrames(options);
+  if (checkpoint && planned <= options.startFrame)
+    throw InputError("the run already reached frame " + std::to_string(options.startFrame) +
+                     "; give --frames N (N > " + std::to_string(options.startFrame) + ") or --time to extend it",
+                     out + "/" + kCheckpointFile);
 
   FrameWriter writer(out, scene.textAsRun(), checkpoint ? FrameWriter::Start::Resume : FrameWriter::Start::Fresh);
   Runner writingRunner(sim, &writer);
   if (checkpoint) {
-    const int planned = writingRunner.plannedFrames(options);
-    if (planned <= options.startFrame)
-      throw InputError("the run already reached frame " + std::to_string(options.startFrame) +
-                       "; give --frames N (N > " + std::to_string(options.startFrame) + ") or --time to extend it",
-                       out + "/" + kCheckpointFile);
     checkpoint->restore(writer, sim);
     if (!args.quiet)
       std::fprintf(stderr, "soak: resuming %s at frame %d (t = %.4f s, step %lld), written on %s\n", out.c_str(),
@@ -135,7 +139,7 @@ int runCommand(const RunArguments& args) {
   if (!args.quiet) {
     std::fprintf(stderr, "soak: %s on %s%s, %d particles, dt=%g s, %d frames -> %s\n", scene.path().c_str(),
                  deviceName(device), device == Device::Cuda ? (" (" + cudaDeviceDescription() + ")").c_str() : "",
-                 sim.particles.count(), double(sim.settings.timeStep), writingRunner.plannedFrames(options), out.c_str());
+                 sim.particles.count(), double(sim.settings.timeStep), planned, out.c_str());
   }
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);
