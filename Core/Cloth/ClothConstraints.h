@@ -52,29 +52,34 @@ SOAK_INLINE void projectStretch(Vec3 x1, float w1, Vec3 x2, float w2, float l0, 
 // n1 = (x2 - x1) x (x3 - x1) / |..|, n2 = (x2 - x1) x (x4 - x1) / |..|.
 // The q_i are Mueller et al. 2007's (Appendix A) vectors, which are -grad_i d
 // for d = n1 . n2, so grad_i C = q_i / sqrt(1 - d^2) (checked by a test that
-// drives the angle to its rest value).
-SOAK_INLINE void projectBend(const Vec3 x[4], const float w[4], float phi0, ConstraintStiffness k, float dt,
-                             float& lambda, Vec3 dx[4]) {
-  for (int a = 0; a < 4; ++a) dx[a] = Vec3(0.f, 0.f, 0.f);
+// drives the angle to its rest value). Returns false where the gradient is
+// undefined (a degenerate triangle, or the pair flat or folded flat).
+SOAK_INLINE bool bendGradient(const Vec3 x[4], float phi0, float& C, Vec3 grad[4]) {
   const Vec3 p2 = x[1] - x[0], p3 = x[2] - x[0], p4 = x[3] - x[0];
   Vec3 c23 = cross(p2, p3), c24 = cross(p2, p4);
   float l23 = length(c23), l24 = length(c24);
-  if (l23 < 1e-12f || l24 < 1e-12f) return;
+  if (l23 < 1e-12f || l24 < 1e-12f) return false;
   Vec3 n1 = c23 / l23, n2 = c24 / l24;
   float d = minf(1.f, maxf(-1.f, dot(n1, n2)));
-  float C = acosf(d) - phi0;
+  C = acosf(d) - phi0;
   float sinAngle = sqrtf(maxf(1.f - d * d, 0.f));
-  if (sinAngle < 1e-6f) return;  // flat or folded flat: gradient undefined
+  if (sinAngle < 1e-6f) return false;
+  grad[2] = (cross(p2, n2) + cross(n1, p2) * d) / l23;
+  grad[3] = (cross(p2, n1) + cross(n2, p2) * d) / l24;
+  grad[1] = -(cross(p3, n2) + cross(n1, p3) * d) / l23 - (cross(p4, n1) + cross(n2, p4) * d) / l24;
+  grad[0] = -grad[1] - grad[2] - grad[3];
+  for (int a = 0; a < 4; ++a) grad[a] = grad[a] * (1.f / sinAngle);
+  return true;
+}
+
+SOAK_INLINE void projectBend(const Vec3 x[4], const float w[4], float phi0, ConstraintStiffness k, float dt,
+                             float& lambda, Vec3 dx[4]) {
+  for (int a = 0; a < 4; ++a) dx[a] = Vec3(0.f, 0.f, 0.f);
+  float C = 0.f;
   Vec3 q[4];
-  q[2] = (cross(p2, n2) + cross(n1, p2) * d) / l23;
-  q[3] = (cross(p2, n1) + cross(n2, p2) * d) / l24;
-  q[1] = -(cross(p3, n2) + cross(n1, p3) * d) / l23 - (cross(p4, n1) + cross(n2, p4) * d) / l24;
-  q[0] = -q[1] - q[2] - q[3];
+  if (!bendGradient(x, phi0, C, q)) return;
   float sum = 0.f;
-  for (int a = 0; a < 4; ++a) {
-    q[a] = q[a] * (1.f / sinAngle);  // grad C
-    sum += w[a] * lengthSquared(q[a]);
-  }
+  for (int a = 0; a < 4; ++a) sum += w[a] * lengthSquared(q[a]);
   float s = constraintScale(C, sum, k, dt, lambda);
   for (int a = 0; a < 4; ++a) dx[a] = q[a] * (s * w[a]);
 }

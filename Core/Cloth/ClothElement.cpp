@@ -38,6 +38,8 @@ class ClothModule : public Module {
         throw InputError("<Cloth>: axisU and axisV must be non-zero and not parallel", where);
       spec.mesh = makeRectangularSheet(p_.vector("origin"), u / length(u), v / length(v), p_.realf("width"),
                                        p_.realf("height"), cellsU, cellsV);
+      spec.sheetColumns = cellsU + 1;
+      spec.sheetRows = cellsV + 1;
     } else {
       spec.mesh = loadObjMesh(p_.resolvePath(meshFile));
       spec.mesh.triangleLines.clear();  // checked against the file already; later messages name the scene
@@ -52,7 +54,15 @@ class ClothModule : public Module {
     spec.tetherSlack = p_.boolean("tethers") ? p_.realf("tetherSlack") : -1.f;
     // Eq. 5 over all the rounds of a step, so that sub-steps keep the stiffness per step.
     const int iterations = sim.settings.clothIterations * sim.settings.clothSubsteps;
-    if (p_.text("model") == "xpbd") {
+    const std::string model = p_.text("model");
+    if (model == "chebyshev") {
+      spec.model = ClothModel::Chebyshev;
+      spec.stretchStiffness = stiffnessFromCompliance(p_.realf("stretchCompliance"));
+      // Bending: one projection pass per sub-step (Cloth/ClothJacobi.h).
+      spec.bend.kPrime = perIterationStiffness(p_.realf("bendStiffness"), sim.settings.clothSubsteps);
+      spec.stretchLimits = p_.boolean("stretchLimits");
+    } else if (model == "xpbd") {
+      spec.model = ClothModel::Xpbd;
       spec.stretch.compliance = p_.realf("stretchCompliance");
       spec.bend.compliance = p_.realf("bendCompliance");
     } else {
@@ -120,12 +130,23 @@ void registerClothElement(ModuleRegistry& r) {
                      "Long-range attachments: no vertex moves further from its nearest pins than its rest "
                      "distance x (1 + tetherSlack); keeps hanging cloth from over-stretching at few iterations.")
             .real("tetherSlack", "", "0", "Relative slack of the tethers (a sheet pinned at four corners sags only by this much).", 0.0, 10.0)
-            .choice("model", {"pbd", "xpbd"}, "pbd",
-                    "pbd: stiffness in [0, 1] with the per-iteration factor of Eq. 5; xpbd: compliance.")
+            .choice("model", {"pbd", "xpbd", "chebyshev"}, "pbd",
+                    "The cloth solver. pbd: the paper's Gauss-Seidel PBD over constraint colours, stiffness in "
+                    "[0, 1] with the per-iteration factor of Eq. 5; xpbd: the same with compliance; chebyshev: "
+                    "Jacobi iterations on the implicit-Euler energy with Chebyshev acceleration (one dependent "
+                    "phase per iteration; Doc/model.md, \"Cloth solvers\"): stretch from stretchCompliance, "
+                    "bending from bendStiffness, applied once per sub-step.")
+            .boolean("stretchLimits", "true",
+                     "chebyshev, generated sheets: keep each vertex within its rest distance of the vertices 2, 4, "
+                     "8, ... apart along its row and column. They never resist folding (on a sheet cut flat no "
+                     "fold lengthens them) and carry the resistance to stretch across the sheet in few "
+                     "iterations.")
             .real("stretchStiffness", "", "1", "PBD stiffness of the stretch constraint (Eq. 8).", 0.0, 1.0)
-            .real("bendStiffness", "", "0.1", "PBD stiffness of the bending constraint (Eq. 9).", 0.0, 1.0)
-            .real("stretchCompliance", "m/N", "0", "XPBD compliance of the stretch constraint.", 0.0, 1e6)
-            .real("bendCompliance", "1/(N m)", "1", "XPBD compliance of the bending constraint.", 0.0, 1e6)
+            .real("bendStiffness", "", "0.1", "pbd, chebyshev: stiffness of the bending constraint (Eq. 9).", 0.0, 1.0)
+            .real("stretchCompliance", "m/N", "0",
+                  "xpbd, chebyshev: compliance of the stretch constraint (0: inextensible).", 0.0, 1e6)
+            .real("bendCompliance", "1/(N m)", "1", "xpbd: compliance of the bending constraint.", 0.0,
+                  1e6)
             .integerList("pin", "", "Vertex indices held in place (inverse mass 0).")
             .text("pinCorners", "", "Sheet only: corners held in place, from u0v0 u1v0 u0v1 u1v1.")
             .text("attachTo", "", "Name of a collider the pinned vertices move with.")

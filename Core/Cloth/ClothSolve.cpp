@@ -31,6 +31,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
   for (std::size_t col = 0; col + 1 < bendColours.size(); ++col)
     fits = fits && phases.add(bendBase + bendColours[col], bendBase + bendColours[col + 1]);
   if (!fits) throw std::logic_error("cloth solve: more constraint colours than kMaxPhases");
+  if (phases.count == 0) return;  // every cloth is solved by the Jacobi solve
   // The solve works on a copy of the predicted positions in vertex order:
   // constraints name vertices, so each load is one indirection shorter than
   // through the particle slots, and neighbouring vertices share cache lines.
@@ -42,6 +43,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
       // The pins, their lengths and positions are loaded before the
       // sequential projections, so the loads overlap.
       const int v = k;
+      if (c.solvedByJacobi[v]) return;  // its tethers are terms of the Jacobi solve
       const TetherPins pins = loadReadOnly(reinterpret_cast<const TetherPins*>(c.tetherPin) + v);
       const Float4 xv = x[v];
       if (xv.w == 0.f || pins.pin[0] < 0) return;
@@ -86,7 +88,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
 }
 
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations,
+                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
                   ClothSubstepScratch s, const std::function<void(ParticleView)>& contacts) {
   const ClothView c = cloth.view();
   const float h = dt / float(substeps);
@@ -122,6 +124,7 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     }, "cloth.substep.predict");
     cloth.resetMultipliers();
     solveClothConstraints(d, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), iterations, h);
+    solveClothJacobi(d, p, c, iterations, h, rho);
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
       const int i = c.vertexSlot[v];
       const Float4 xp = p.predicted[i];

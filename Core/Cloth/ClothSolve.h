@@ -16,6 +16,11 @@ void moveAttachedVertices(Device d, ParticleView p, ClothView c, const Collider*
 void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vector<int>& stretchColours,
                            const std::vector<int>& bendColours, int iterations, float dt);
 
+// `iterations` Jacobi-Chebyshev iterations (ClothJacobi.h) over the vertices
+// of the chebyshev cloths, for a sub-step of length h; rho is the spectral
+// radius the Chebyshev weights assume. One dependent phase per iteration.
+void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho);
+
 // Buffers of the cloth sub-steps, per particle slot.
 struct ClothSubstepScratch {
   Float4* start = nullptr;      // position (and inverse mass) at the start of the sub-step
@@ -35,7 +40,7 @@ struct ClothSubstepScratch {
 // predicted positions and velocityFix, which finalize adds to (x* - x) / dt so
 // that a cloth particle leaves the step with its last sub-step's velocity.
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations,
+                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
                   ClothSubstepScratch scratch, const std::function<void(ParticleView)>& contacts);
 
 }  // namespace soak

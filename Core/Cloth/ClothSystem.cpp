@@ -1,6 +1,7 @@
 #include "Cloth/ClothSystem.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "Backend/ForEach.h"
 #include "Base/Atomic.h"
@@ -13,7 +14,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dTetherStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -27,6 +28,8 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   obj.firstTriangle = int(triangles_.size());
   obj.triangleCount = int(spec.mesh.triangles.size());
   obj.localTriangles = spec.mesh.triangles;
+  obj.model = spec.model;
+  const bool jacobi = spec.model == ClothModel::Chebyshev;
 
   float thickness = spec.thickness;
   if (thickness <= 0.f) {
@@ -47,6 +50,9 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     q.id = first + int(v);
     q.pinned = pinned[v] != 0;
     restPosition_.push_back(spec.mesh.vertices[v]);
+    jacobi_.push_back(jacobi ? 1 : 0);
+    // A tether is as stiff as the stretch edges it stands in for.
+    tetherStiffness_.push_back(spec.stretchStiffness);
     attach_.push_back(pinned[v] ? spec.attachCollider : -1);
     thickness_.push_back(thickness);
   }
@@ -69,7 +75,13 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     }
   }
 
+  obj.firstEdge = int(edges_.size());
+  obj.edgeCount = int(topo.edges.size());
   for (std::size_t e = 0; e < topo.edges.size(); ++e) {
+    const int a = topo.edges[e][0], b = topo.edges[e][1];
+    const int nu = spec.sheetColumns;
+    edgeMeasured_.push_back(nu == 0 || a / nu == b / nu || a % nu == b % nu);
+    edgeWeight_.push_back(spec.stretchStiffness);
     edges_.push_back({first + topo.edges[e][0], first + topo.edges[e][1]});
     edgeRest_.push_back(topo.edgeRestLength[e]);
     edgeStiffness_.push_back(spec.stretch);
@@ -81,6 +93,28 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     bends_.push_back(cb);
     bendRest_.push_back(topo.bendRestAngle[b]);
     bendStiffness_.push_back(spec.bend);
+    bendWeight_.push_back(spec.bend.kPrime);
+  }
+  // Stretch limits (chebyshev, generated sheets): each vertex is kept within
+  // its rest distance of the vertices 2, 4, 8, ... apart along its row and
+  // its column. On a sheet cut flat that distance is the geodesic one, which
+  // no isometric motion exceeds, so a limit never resists folding or
+  // bending; it only carries the resistance to stretch across the sheet,
+  // a distance of 2^m in one Jacobi iteration instead of m hops.
+  if (jacobi && spec.stretchLimits && spec.sheetColumns > 0) {
+    const int nu = spec.sheetColumns, rows = spec.sheetRows;
+    for (int j = 0; j < rows; ++j)
+      for (int i = 0; i < nu; ++i)
+        for (int span = 2; span < std::max(nu, rows); span *= 2) {
+          const int di[4] = {span, -span, 0, 0}, dj[4] = {0, 0, span, -span};
+          for (int k = 0; k < 4; ++k) {
+            const int i2 = i + di[k], j2 = j + dj[k];
+            if (i2 < 0 || i2 >= nu || j2 < 0 || j2 >= rows) continue;
+            const int a = j * nu + i, b = j2 * nu + i2;
+            limitVertex_.push_back(first + a);
+            limitOf_.push_back({first + b, length(spec.mesh.vertices[a] - spec.mesh.vertices[b]), spec.stretchStiffness, 1});
+          }
+        }
   }
   for (const auto& t : spec.mesh.triangles) triangles_.push_back({{first + t[0], first + t[1], first + t[2]}});
   objects_.push_back(std::move(obj));
@@ -98,23 +132,37 @@ std::vector<T> permuted(const std::vector<T>& v, const std::vector<int>& order) 
 
 void ClothSystem::upload() {
   const int nv = vertexCount();
-  std::vector<int> ev;
-  for (const auto& e : edges_) ev.insert(ev.end(), {e.a, e.b});
+  // PBD and XPBD constraints are coloured for Gauss-Seidel; those of
+  // chebyshev cloths go to the per-vertex lists of the Jacobi solve.
+  std::vector<int> ev, pbdEdges;
+  for (std::size_t e = 0; e < edges_.size(); ++e)
+    if (!jacobi_[edges_[e].a]) {
+      ev.insert(ev.end(), {edges_[e].a, edges_[e].b});
+      pbdEdges.push_back(int(e));
+    }
   ColouredOrder ec = colourConstraints(ev, 2, nv);
-  std::vector<int> bv;
-  for (const auto& b : bends_) bv.insert(bv.end(), {b.v[0], b.v[1], b.v[2], b.v[3]});
+  std::vector<int> bv, pbdBends;
+  for (std::size_t b = 0; b < bends_.size(); ++b)
+    if (!jacobi_[bends_[b].v[0]]) {
+      bv.insert(bv.end(), {bends_[b].v[0], bends_[b].v[1], bends_[b].v[2], bends_[b].v[3]});
+      pbdBends.push_back(int(b));
+    }
   ColouredOrder bc = colourConstraints(bv, 4, nv);
   edgeColourStart_ = ec.colourStart.empty() ? std::vector<int>{0} : ec.colourStart;
   bendColourStart_ = bc.colourStart.empty() ? std::vector<int>{0} : bc.colourStart;
+  std::vector<int> edgeOrder(ec.order.size()), bendOrder(bc.order.size());
+  for (std::size_t k = 0; k < ec.order.size(); ++k) edgeOrder[k] = pbdEdges[ec.order[k]];
+  for (std::size_t k = 0; k < bc.order.size(); ++k) bendOrder[k] = pbdBends[bc.order[k]];
 
-  dEdges_.upload(permuted(edges_, ec.order));
-  dEdgeRest_.upload(permuted(edgeRest_, ec.order));
-  dEdgeStiffness_.upload(permuted(edgeStiffness_, ec.order));
-  dEdgeLambda_.resize(edges_.size());
-  dBends_.upload(permuted(bends_, bc.order));
-  dBendRest_.upload(permuted(bendRest_, bc.order));
-  dBendStiffness_.upload(permuted(bendStiffness_, bc.order));
-  dBendLambda_.resize(bends_.size());
+  dEdges_.upload(permuted(edges_, edgeOrder));
+  dEdgeRest_.upload(permuted(edgeRest_, edgeOrder));
+  dEdgeStiffness_.upload(permuted(edgeStiffness_, edgeOrder));
+  dEdgeLambda_.resize(edgeOrder.size());
+  dBends_.upload(permuted(bends_, bendOrder));
+  dBendRest_.upload(permuted(bendRest_, bendOrder));
+  dBendStiffness_.upload(permuted(bendStiffness_, bendOrder));
+  dBendLambda_.resize(bendOrder.size());
+  uploadJacobi();
   resetMultipliers();
   dTriangles_.upload(triangles_);
   // Triangles touching each vertex (CSR).
@@ -141,13 +189,63 @@ void ClothSystem::upload() {
   dAttach_.upload(attach_);
   dThickness_.upload(thickness_);
   dTetherPin_.upload(tetherPin_);
-  anyTethers_ = std::any_of(tetherPin_.begin(), tetherPin_.end(), [](int pin) { return pin >= 0; });
+  anyTethers_ = false;
+  for (int v = 0; v < nv; ++v) anyTethers_ = anyTethers_ || (!jacobi_[v] && tetherPin_[std::size_t(v) * kTethers] >= 0);
   dTetherLength_.upload(tetherLength_);
   dSlot_.resize(nv);
   dVertexScratch_.resize(nv);
   dClothSlots_.resize(nv);
   dGridKey_.resize(nv);
   scratch_.resize(std::max<std::size_t>(edges_.size(), 1));
+}
+
+void ClothSystem::uploadJacobi() {
+  const int nv = vertexCount();
+  jacobiVertices_.clear();
+  for (int v = 0; v < nv; ++v)
+    if (jacobi_[v]) jacobiVertices_.push_back(v);
+  std::vector<int> springStart(nv + 1, 0), refStart(nv + 1, 0);
+  std::vector<int> jacobiBends;
+  for (const ClothEdge& e : edges_)
+    if (jacobi_[e.a]) {
+      ++springStart[e.a + 1];
+      ++springStart[e.b + 1];
+    }
+  for (int v : limitVertex_) ++springStart[v + 1];
+  for (std::size_t b = 0; b < bends_.size(); ++b)
+    if (jacobi_[bends_[b].v[0]]) {
+      jacobiBends.push_back(int(b));
+      for (int a = 0; a < 4; ++a) ++refStart[bends_[b].v[a] + 1];
+    }
+  for (int v = 0; v < nv; ++v) {
+    springStart[v + 1] += springStart[v];
+    refStart[v + 1] += refStart[v];
+  }
+  std::vector<JacobiSpring> springs(springStart[nv]);
+  std::vector<int> fill(springStart.begin(), springStart.end() - 1);
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    const ClothEdge edge = edges_[e];
+    if (!jacobi_[edge.a]) continue;
+    springs[fill[edge.a]++] = {edge.b, edgeRest_[e], edgeWeight_[e], 0};
+    springs[fill[edge.b]++] = {edge.a, edgeRest_[e], edgeWeight_[e], 0};
+  }
+  for (std::size_t k = 0; k < limitOf_.size(); ++k) springs[fill[limitVertex_[k]]++] = limitOf_[k];
+  std::vector<JacobiBendRef> refs(refStart[nv]);
+  fill.assign(refStart.begin(), refStart.end() - 1);
+  for (std::size_t k = 0; k < jacobiBends.size(); ++k)
+    for (int a = 0; a < 4; ++a) refs[fill[bends_[jacobiBends[k]].v[a]]++] = {int(k), a};
+  dJacobiVertices_.upload(jacobiVertices_);
+  dSpringStart_.upload(springStart);
+  dSprings_.upload(springs);
+  dBendRefStart_.upload(refStart);
+  dBendRefs_.upload(refs);
+  dJacobiBends_.upload(permuted(bends_, jacobiBends));
+  dJacobiBendRest_.upload(permuted(bendRest_, jacobiBends));
+  dJacobiBendStiffness_.upload(permuted(bendWeight_, jacobiBends));
+  dTetherStiffness_.upload(tetherStiffness_);
+  dSolvedByJacobi_.upload(jacobi_);
+  dJacobiPrevious_.resize(std::size_t(nv));
+  dJacobiTarget_.resize(std::size_t(nv));
 }
 
 ClothView ClothSystem::view() {
@@ -177,6 +275,20 @@ ClothView ClothSystem::view() {
   v.vertexSlot = dSlot_.data();
   v.vertexScratch = dVertexScratch_.data();
   v.clothSlots = dClothSlots_.data();
+  v.jacobiVertices = dJacobiVertices_.data();
+  v.springStart = dSpringStart_.data();
+  v.springs = dSprings_.data();
+  v.bendRefStart = dBendRefStart_.data();
+  v.bendRefs = dBendRefs_.data();
+  v.jacobiBends = dJacobiBends_.data();
+  v.jacobiBendRest = dJacobiBendRest_.data();
+  v.jacobiBendStiffness = dJacobiBendStiffness_.data();
+  v.anyJacobiBends = dJacobiBends_.size() > 0;
+  v.tetherStiffness = dTetherStiffness_.data();
+  v.solvedByJacobi = dSolvedByJacobi_.data();
+  v.jacobiVertexCount = int(jacobiVertices_.size());
+  v.jacobiPrevious = dJacobiPrevious_.data();
+  v.jacobiTarget = dJacobiTarget_.data();
   v.vertexCount = vertexCount();
   v.edgeCount = int(dEdges_.size());
   v.bendCount = int(dBends_.size());
@@ -264,6 +376,38 @@ float ClothSystem::maxStretch(ParticleView p) {
     strain[e] = fabsf(length(a - b) - c.edgeRest[e]) / c.edgeRest[e];
   }, "cloth.strain");
   return reduceMax(device_, strain, c.edgeCount);
+}
+
+std::vector<ClothStrain> ClothSystem::strain(const std::vector<Float4>& position, const std::vector<int>& id,
+                                             const std::vector<int>& phase) const {
+  std::vector<int> slot(restPosition_.size(), -1);
+  for (std::size_t i = 0; i < phase.size(); ++i)
+    if (isCloth(phase[i]) && id[i] >= 0 && std::size_t(id[i]) < slot.size()) slot[std::size_t(id[i])] = int(i);
+  std::vector<ClothStrain> out;
+  std::vector<double> strains;
+  for (const ClothObject& obj : objects_) {
+    strains.clear();
+    for (int e = obj.firstEdge; e < obj.firstEdge + obj.edgeCount; ++e) {
+      if (!edgeMeasured_[std::size_t(e)]) continue;
+      const int a = slot[std::size_t(edges_[std::size_t(e)].a)], b = slot[std::size_t(edges_[std::size_t(e)].b)];
+      if (a < 0 || b < 0) continue;
+      const double l = double(length(position[std::size_t(a)].xyz() - position[std::size_t(b)].xyz()));
+      const double l0 = double(edgeRest_[std::size_t(e)]);
+      strains.push_back(std::fabs(l - l0) / l0);
+    }
+    ClothStrain s;
+    if (!strains.empty()) {
+      double sum = 0.0;
+      for (double v : strains) sum += v;
+      s.mean = sum / double(strains.size());
+      const std::size_t k = std::min(strains.size() - 1, std::size_t(0.99 * double(strains.size())));
+      std::nth_element(strains.begin(), strains.begin() + std::ptrdiff_t(k), strains.end());
+      s.p99 = strains[k];
+      s.max = *std::max_element(strains.begin(), strains.end());
+    }
+    out.push_back(s);
+  }
+  return out;
 }
 
 std::vector<Vec3> ClothSystem::downloadVertexPositions(const ParticleState& particles, int clothIndex) const {

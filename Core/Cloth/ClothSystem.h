@@ -9,6 +9,7 @@
 
 #include "Backend/Buffer.h"
 #include "Cloth/ClothConstraints.h"
+#include "Cloth/ClothJacobi.h"
 #include "Cloth/ClothTopology.h"
 #include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"
@@ -90,10 +91,36 @@ struct ClothView {
   // within tetherLength of pinned vertex tetherPin (kTethers per vertex, -1: none).
   const int* tetherPin = nullptr;
   const float* tetherLength = nullptr;
-  bool anyTethers = false;  // some vertex has a tether
+  bool anyTethers = false;  // some vertex of a PBD or XPBD cloth has a tether
+  // Cloth.model="chebyshev" (ClothJacobi.h): the vertices it solves, and per
+  // vertex (CSR over all vertices, empty for the others) its stretch edges
+  // and the bends it is part of.
+  const int* jacobiVertices = nullptr;
+  const int* springStart = nullptr;
+  const JacobiSpring* springs = nullptr;
+  const int* bendRefStart = nullptr;
+  const JacobiBendRef* bendRefs = nullptr;
+  const ClothBend* jacobiBends = nullptr;
+  const float* jacobiBendRest = nullptr;
+  const float* jacobiBendStiffness = nullptr;  // kPrime of Eq. 5 per sub-step
+  bool anyJacobiBends = false;
+  const float* tetherStiffness = nullptr;      // per vertex, N/m
+  const unsigned char* solvedByJacobi = nullptr;  // per vertex: 1 for a chebyshev cloth's vertex
+  int jacobiVertexCount = 0;
+  Float4* jacobiPrevious = nullptr;  // per vertex: the iterate before the last (Chebyshev)
+  Float4* jacobiTarget = nullptr;    // per vertex: the predicted position y of the sub-step
   int vertexCount = 0, edgeCount = 0, bendCount = 0, triangleCount = 0;
   float maxEdgeLength = 0.f;  // longest rest edge of any cloth (bounds a triangle's reach from its vertices)
   float maxThickness = 0.f;   // largest thickness of any cloth
+};
+
+// Which solver a cloth's constraints go to (Cloth.model).
+enum class ClothModel { Pbd, Xpbd, Chebyshev };
+
+// Edge strain |l - l0| / l0 of one cloth: over its warp and weft edges on a
+// generated sheet, over all edges on a mesh.
+struct ClothStrain {
+  double mean = 0.0, p99 = 0.0, max = 0.0;
 };
 
 // How one cloth object is made (host side, from a <Cloth> element).
@@ -102,7 +129,13 @@ struct ClothSpec {
   TriangleMesh mesh;
   float particleMass = 0.0066f;   // kg per vertex (Table 1)
   float supportRadius = 0.04f;    // h of cloth particles as boundary / porous particles
-  ConstraintStiffness stretch, bend;
+  ConstraintStiffness stretch, bend;  // PBD and XPBD
+  ClothModel model = ClothModel::Pbd;
+  float stretchStiffness = kStiffest;  // N/m, chebyshev (bending: bend.kPrime, once per sub-step)
+  int sheetColumns = 0;           // vertices per row of a generated sheet (0: a mesh); strain is then measured
+                                  // over the edges along its rows and columns
+  int sheetRows = 0;              // rows of vertices of a generated sheet
+  bool stretchLimits = false;     // chebyshev, sheets: the multi-scale stretch limits (ClothSystem::add)
   std::vector<int> pinned;        // local vertex indices with inverse mass 0
   int attachCollider = -1;        // pinned vertices follow this collider (-1: fixed)
   float thickness = 0.f;          // contact distance, m (0: 0.75 x mean edge length)
@@ -114,6 +147,8 @@ struct ClothObject {
   int phase = 0;
   int firstVertex = 0, vertexCount = 0;
   int firstTriangle = 0, triangleCount = 0;
+  int firstEdge = 0, edgeCount = 0;  // in creation order (host)
+  ClothModel model = ClothModel::Pbd;
   std::vector<std::array<int, 3>> localTriangles;  // for output
 };
 
@@ -150,10 +185,21 @@ class ClothSystem {
   void resetMultipliers();
   // Largest relative edge strain |l - l0| / l0 over all edges.
   float maxStretch(ParticleView p);
+  // Strain of each cloth (ClothStrain) from host copies of the particles'
+  // positions, ids and phases.
+  std::vector<ClothStrain> strain(const std::vector<Float4>& position, const std::vector<int>& id,
+                                  const std::vector<int>& phase) const;
+  // Whether some cloth uses the PBD/XPBD constraints, or the Jacobi solve.
+  bool anyColouredConstraints() const { return stretchColours() > 0 || bendColours() > 0 || anyTethers_; }
+  bool anyJacobi() const { return !jacobiVertices_.empty(); }
+  // Dependent phases of one constraint round of each solver: the colours
+  // (+ the tethers' phase) for PBD/XPBD, one for the Jacobi solve.
+  int colouredPhasesPerIteration() const { return stretchColours() + bendColours() + (anyTethers_ ? 1 : 0); }
   // Host copy of the positions of one cloth's vertices, in vertex order.
   std::vector<Vec3> downloadVertexPositions(const ParticleState& particles, int clothIndex) const;
 
  private:
+  void uploadJacobi();
   Device device_;
   std::vector<ClothObject> objects_;
   // Host staging, in creation order until upload() colours them.
@@ -169,6 +215,13 @@ class ClothSystem {
   std::vector<float> thickness_;
   std::vector<int> tetherPin_;
   std::vector<float> tetherLength_;
+  std::vector<float> tetherStiffness_;
+  std::vector<unsigned char> edgeMeasured_;  // per edge (creation order): counted in strain()
+  std::vector<unsigned char> jacobi_;         // per vertex: solved by the Jacobi solve
+  std::vector<float> edgeWeight_, bendWeight_;  // per edge / bend: chebyshev stiffness
+  std::vector<int> jacobiVertices_;
+  std::vector<JacobiSpring> limitOf_;  // stretch limits, with limitVertex_ the vertex each belongs to
+  std::vector<int> limitVertex_;
   std::vector<int> edgeColourStart_, bendColourStart_;
   float maxEdgeLength_ = 0.f, maxThickness_ = 0.f;
   Buffer<ClothEdge> dEdges_;
@@ -187,6 +240,13 @@ class ClothSystem {
   Buffer<Float4> dVertexScratch_;
   Buffer<int> dClothFlag_, dClothOffset_, dClothSlots_;  // per particle, per particle, per vertex
   bool anyTethers_ = false;  // some vertex has a tether (set by upload())
+  Buffer<int> dJacobiVertices_, dSpringStart_, dBendRefStart_;
+  Buffer<JacobiSpring> dSprings_;
+  Buffer<JacobiBendRef> dBendRefs_;
+  Buffer<ClothBend> dJacobiBends_;
+  Buffer<float> dJacobiBendRest_, dJacobiBendStiffness_, dTetherStiffness_;
+  Buffer<unsigned char> dSolvedByJacobi_;
+  Buffer<Float4> dJacobiPrevious_, dJacobiTarget_;
   Buffer<BucketRange> dGridRange_;  // the cloth grid: per bucket
   Buffer<std::uint32_t> dGridKey_;  // the cloth grid: per vertex
   Buffer<std::uint32_t> dGridNear_;  // the cloth grid: near bits, one per bucket

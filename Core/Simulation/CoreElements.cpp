@@ -22,6 +22,7 @@ class SimulationModule : public Module {
     sim.settings.maxSpeed = p_.realf("maxSpeed");
     sim.settings.clothIterations = int(p_.integer("clothIterations"));
     sim.settings.clothSubsteps = int(p_.integer("clothSubsteps"));
+    sim.settings.clothSpectralRadius = p_.realf("clothSpectralRadius");
     sim.settings.domainMin = p_.vector("domainMin");
     sim.settings.domainMax = p_.vector("domainMax");
     sim.couplingPasses = int(p_.integer("couplingPasses"));
@@ -208,6 +209,10 @@ void registerCoreElements(ModuleRegistry& r) {
                      "Cloth sub-steps per step: gravity, constraints and colliders of the cloth advance in steps "
                      "of timeStep / clothSubsteps (less stretch than the same number of iterations in one step).",
                      1, 100)
+            .real("clothSpectralRadius", "", "0.95",
+                  "Cloth.model=chebyshev: the spectral radius rho its Chebyshev weights assume (Wang 2015); "
+                  "nearer 1 converges further per iteration on large sheets, too near 1 oscillates.",
+                  0.0, 0.9999)
             .integer("couplingPasses", "2", "Passes of the water-triangle constraint (Eq. 21) per step.", 1, 100)
             .integer("contactPasses", "2", "Passes of cloth self and cloth-cloth contact per step.", 0, 100)
             .vector("domainMin", "m", "-1000 -1000 -1000", "Water below this corner is removed (drained).")

@@ -67,6 +67,7 @@ void Simulation::addCoreStages() {
                        substepCloth(s.device(), p, s.cloth, s.deviceColliders(), int(s.colliders.size()),
                                     kCollisionRadiusScale, s.settings.gravity, float(s.settings.timeStep),
                                     s.settings.clothSubsteps, s.settings.clothIterations,
+                                    s.settings.clothSpectralRadius,
                                     {s.substepStart_.data(), s.substepVelocity_.data(), s.velocityFix_.data()},
                                     contacts);
                        return;
@@ -75,6 +76,8 @@ void Simulation::addCoreStages() {
                      s.cloth.resetMultipliers();
                      solveClothConstraints(s.device(), p, c, s.cloth.edgeColourStart(), s.cloth.bendColourStart(),
                                            s.settings.clothIterations, float(s.settings.timeStep));
+                     solveClothJacobi(s.device(), p, c, s.settings.clothIterations, float(s.settings.timeStep),
+                                      s.settings.clothSpectralRadius);
                      // Colliders first, so that contact sees a layer resting on the floor where it is.
                      projectColliders(s.device(), p, s.deviceColliders(), int(s.colliders.size()),
                                       kCollisionRadiusScale, float(s.settings.timeStep));
@@ -226,6 +229,15 @@ StatsRow Simulation::collectStats() {
   row.add("max_speed", maxSpeed);
   row.add("kinetic_energy", kinetic);
   row.add("max_stretch", cloth.empty() ? 0.0 : double(cloth.maxStretch(particles.view())));
+  if (!cloth.empty()) {
+    // Edge strain per cloth (ClothSystem::strain): warp and weft edges of a sheet, all edges of a mesh.
+    const std::vector<ClothStrain> strain =
+        cloth.strain(particles.downloadPositions(), particles.downloadIds(), phase);
+    for (std::size_t k = 0; k < strain.size(); ++k) {
+      row.add("strain_mean_" + cloth.objects()[k].name, strain[k].mean);
+      row.add("strain_p99_" + cloth.objects()[k].name, strain[k].p99);
+    }
+  }
   for (auto& m : modules_) m->addStats(*this, row);
   return row;
 }
