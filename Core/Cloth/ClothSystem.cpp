@@ -234,6 +234,7 @@ void ClothSystem::uploadJacobi() {
   fill.assign(refStart.begin(), refStart.end() - 1);
   for (std::size_t k = 0; k < jacobiBends.size(); ++k)
     for (int a = 0; a < 4; ++a) refs[fill[bends_[jacobiBends[k]].v[a]]++] = {int(k), a};
+  jacobiBendCount_ = int(jacobiBends.size());
   dJacobiVertices_.upload(jacobiVertices_);
   dSpringStart_.upload(springStart);
   dSprings_.upload(springs);

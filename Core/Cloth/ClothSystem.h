@@ -195,6 +195,13 @@ class ClothSystem {
   // Dependent phases of one constraint round of each solver: the colours
   // (+ the tethers' phase) for PBD/XPBD, one for the Jacobi solve.
   int colouredPhasesPerIteration() const { return stretchColours() + bendColours() + (anyTethers_ ? 1 : 0); }
+  // Dependent constraint phases of one step: per sub-step, `iterations`
+  // rounds of the colours, and `iterations` Jacobi phases plus its bend pass.
+  int constraintPhasesPerStep(int iterations, int substeps) const {
+    const int coloured = colouredPhasesPerIteration() > 0 ? iterations * colouredPhasesPerIteration() : 0;
+    const int jacobi = anyJacobi() ? iterations + (jacobiBendCount_ > 0 ? 1 : 0) : 0;
+    return substeps * (coloured + jacobi);
+  }
   // Host copy of the positions of one cloth's vertices, in vertex order.
   std::vector<Vec3> downloadVertexPositions(const ParticleState& particles, int clothIndex) const;
 
@@ -220,6 +227,7 @@ class ClothSystem {
   std::vector<unsigned char> jacobi_;         // per vertex: solved by the Jacobi solve
   std::vector<float> edgeWeight_, bendWeight_;  // per edge / bend: chebyshev stiffness
   std::vector<int> jacobiVertices_;
+  int jacobiBendCount_ = 0;
   std::vector<JacobiSpring> limitOf_;  // stretch limits, with limitVertex_ the vertex each belongs to
   std::vector<int> limitVertex_;
   std::vector<int> edgeColourStart_, bendColourStart_;

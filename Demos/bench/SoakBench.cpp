@@ -60,6 +60,8 @@ struct Result {
   double launchesPerStep = 0;  // operations queued on the device (launches()) per plain step
   double enqueueMs = 0;        // median host time to queue one step on an idle device
   double aloneMs = 0;          // median time of one step from an idle device to its end
+  int clothPhases = 0;         // dependent cloth constraint phases per step
+  double strainMean = 0, strainP99 = 0;  // edge strain after the timed steps, largest over the cloths
   std::vector<StageRow> stages;
 };
 
@@ -221,6 +223,14 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
   }
   r.cloth = cloth;
   r.water = int(std::lround(0.5 * (waterBefore + waterAfter)));
+  if (!sim.cloth.empty()) {
+    r.clothPhases = sim.cloth.constraintPhasesPerStep(sim.settings.clothIterations, sim.settings.clothSubsteps);
+    const ParticleState& ps = sim.particles;
+    for (const ClothStrain& s : sim.cloth.strain(ps.downloadPositions(), ps.downloadIds(), ps.downloadPhases())) {
+      r.strainMean = std::max(r.strainMean, s.mean);
+      r.strainP99 = std::max(r.strainP99, s.p99);
+    }
+  }
   r.bytesPerParticle = double(deviceBytesInUse(device) - before) / double(std::max(1, sim.particles.count()));
   return r;
 }
@@ -289,6 +299,17 @@ void printTable(const std::vector<Result>& results, const std::string& deviceTex
   for (const Result& r : results)
     std::printf("| %s | %.1f | %.3f | %.3f | %.3f |\n", r.c.name.c_str(), r.launchesPerStep, r.enqueueMs, r.aloneMs,
                 r.totalMs);
+  std::printf("\ncloth: dependent constraint phases per step, and edge strain after the timed steps (mean and 99th\n"
+              "percentile over a sheet's warp and weft edges, a mesh's edges; the largest over the scene's cloths)\n\n");
+  std::printf("| scene | cloth phases/step | cloth.solve ms | strain mean %% | strain p99 %% |\n|---|---|---|---|---|\n");
+  for (const Result& r : results) {
+    double solveMs = 0.0;
+    for (const StageRow& s : r.stages)
+      if (s.name == "cloth.solve") solveMs = s.ms;
+    if (r.cloth > 0)
+      std::printf("| %s | %d | %.3f | %.3f | %.2f |\n", r.c.name.c_str(), r.clothPhases, solveMs, 100.0 * r.strainMean,
+                  100.0 * r.strainP99);
+  }
   printStageTable(results, "per-stage ms per step (profiled)", "%.3f", &StageRow::ms);
   printStageTable(results, "per-stage launches per step", "%.1f", &StageRow::launches);
 }
@@ -304,7 +325,7 @@ void writeJson(const std::string& file, const std::vector<Result>& results, cons
       << ", \"profiled_total_ms\": " << r.profiledMs << ", \"steps_per_s\": " << 1000.0 / r.totalMs
       << ", \"particle_steps_per_s\": " << (r.water + r.cloth) * 1000.0 / r.totalMs
       << ", \"bytes_per_particle\": " << r.bytesPerParticle << ", \"host_waits_per_step\": " << r.waitsPerStep
-      << ", \"launches_per_step\": " << r.launchesPerStep << ", \"enqueue_ms\": " << r.enqueueMs
+      << ", \"cloth_phases_per_step\": " << r.clothPhases << ", \"strain_mean\": " << r.strainMean << ", \"strain_p99\": " << r.strainP99 << ", \"launches_per_step\": " << r.launchesPerStep << ", \"enqueue_ms\": " << r.enqueueMs
       << ", \"alone_ms\": " << r.aloneMs;
     if (r.c.paperTotalMs > 0)
       o << ", \"paper_total_ms\": " << r.c.paperTotalMs << ", \"paper_wetting_ms\": " << r.c.paperWettingMs

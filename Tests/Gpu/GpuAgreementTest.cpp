@@ -166,6 +166,18 @@ TEST(GpuAgreement, ClothSubstepsWithWaterWithinCpuSensitivity) {
   expectCudaWithinCpuSensitivity("sheet on a ball with water, cloth sub-steps", xml, 40);
 }
 
+TEST(GpuAgreement, ChebyshevClothWithWaterWithinCpuSensitivity) {
+  // The chebyshev cloth solve (Jacobi phases, bend pass, tethers, stretch
+  // limits) in 2 sub-steps, with a collider, contacts and water on the sheet.
+  SOAK_SKIP_WITHOUT_GPU();
+  const std::string xml =
+      "<Scene><Simulation clothSubsteps='2' clothIterations='30' clothSpectralRadius='0.9'/><Sphere center='0 0.3 0' "
+      "radius='0.15' friction='0.4'/><Cloth model='chebyshev' origin='-0.3 0.5 -0.3' axisU='1 0 0' axisV='0 0 1' "
+      "width='0.6' height='0.6' cellsU='30' cellsV='30' pinCorners='u0v0'/><WaterBlock min='-0.1 0.53 -0.1' "
+      "max='0.1 0.63 0.1'/></Scene>";
+  expectCudaWithinCpuSensitivity("chebyshev sheet on a ball with water", xml, 40);
+}
+
 TEST(GpuAgreement, JetOnClothWithinCpuSensitivity) {
   SOAK_SKIP_WITHOUT_GPU();
   expectCudaWithinCpuSensitivity("jet on a hanging sheet", kJet, 12);
