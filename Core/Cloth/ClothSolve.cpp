@@ -43,7 +43,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
       // The pins, their lengths and positions are loaded before the
       // sequential projections, so the loads overlap.
       const int v = k;
-      if (c.solvedByJacobi[v]) return;  // its tethers are terms of the Jacobi solve
+      if (c.solvedByJacobi[v]) return;  // the Jacobi solve clamps its iterates to the tethers
       const TetherPins pins = loadReadOnly(reinterpret_cast<const TetherPins*>(c.tetherPin) + v);
       const Float4 xv = x[v];
       if (xv.w == 0.f || pins.pin[0] < 0) return;

@@ -14,7 +14,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dTetherStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -28,7 +28,6 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   obj.firstTriangle = int(triangles_.size());
   obj.triangleCount = int(spec.mesh.triangles.size());
   obj.localTriangles = spec.mesh.triangles;
-  obj.model = spec.model;
   const bool jacobi = spec.model == ClothModel::Chebyshev;
 
   float thickness = spec.thickness;
@@ -51,8 +50,6 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     q.pinned = pinned[v] != 0;
     restPosition_.push_back(spec.mesh.vertices[v]);
     jacobi_.push_back(jacobi ? 1 : 0);
-    // A tether is as stiff as the stretch edges it stands in for.
-    tetherStiffness_.push_back(spec.stretchStiffness);
     attach_.push_back(pinned[v] ? spec.attachCollider : -1);
     thickness_.push_back(thickness);
   }
@@ -93,7 +90,6 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     bends_.push_back(cb);
     bendRest_.push_back(topo.bendRestAngle[b]);
     bendStiffness_.push_back(spec.bend);
-    bendWeight_.push_back(spec.bend.kPrime);
   }
   // Stretch limits (chebyshev, generated sheets): each vertex is kept within
   // its rest distance of the vertices 2, 4, 8, ... apart along its row and
@@ -242,8 +238,9 @@ void ClothSystem::uploadJacobi() {
   dBendRefs_.upload(refs);
   dJacobiBends_.upload(permuted(bends_, jacobiBends));
   dJacobiBendRest_.upload(permuted(bendRest_, jacobiBends));
-  dJacobiBendStiffness_.upload(permuted(bendWeight_, jacobiBends));
-  dTetherStiffness_.upload(tetherStiffness_);
+  std::vector<float> bendKPrime(jacobiBends.size());
+  for (std::size_t k = 0; k < jacobiBends.size(); ++k) bendKPrime[k] = bendStiffness_[jacobiBends[k]].kPrime;
+  dJacobiBendStiffness_.upload(bendKPrime);
   dSolvedByJacobi_.upload(jacobi_);
   dJacobiPrevious_.resize(std::size_t(nv));
   dJacobiTarget_.resize(std::size_t(nv));
@@ -284,8 +281,7 @@ ClothView ClothSystem::view() {
   v.jacobiBends = dJacobiBends_.data();
   v.jacobiBendRest = dJacobiBendRest_.data();
   v.jacobiBendStiffness = dJacobiBendStiffness_.data();
-  v.anyJacobiBends = dJacobiBends_.size() > 0;
-  v.tetherStiffness = dTetherStiffness_.data();
+  v.anyJacobiBends = jacobiBendCount_ > 0;
   v.solvedByJacobi = dSolvedByJacobi_.data();
   v.jacobiVertexCount = int(jacobiVertices_.size());
   v.jacobiPrevious = dJacobiPrevious_.data();

@@ -104,7 +104,6 @@ struct ClothView {
   const float* jacobiBendRest = nullptr;
   const float* jacobiBendStiffness = nullptr;  // kPrime of Eq. 5 per sub-step
   bool anyJacobiBends = false;
-  const float* tetherStiffness = nullptr;      // per vertex, N/m
   const unsigned char* solvedByJacobi = nullptr;  // per vertex: 1 for a chebyshev cloth's vertex
   int jacobiVertexCount = 0;
   Float4* jacobiPrevious = nullptr;  // per vertex: the iterate before the last (Chebyshev)
@@ -148,7 +147,6 @@ struct ClothObject {
   int firstVertex = 0, vertexCount = 0;
   int firstTriangle = 0, triangleCount = 0;
   int firstEdge = 0, edgeCount = 0;  // in creation order (host)
-  ClothModel model = ClothModel::Pbd;
   std::vector<std::array<int, 3>> localTriangles;  // for output
 };
 
@@ -222,10 +220,9 @@ class ClothSystem {
   std::vector<float> thickness_;
   std::vector<int> tetherPin_;
   std::vector<float> tetherLength_;
-  std::vector<float> tetherStiffness_;
   std::vector<unsigned char> edgeMeasured_;  // per edge (creation order): counted in strain()
   std::vector<unsigned char> jacobi_;         // per vertex: solved by the Jacobi solve
-  std::vector<float> edgeWeight_, bendWeight_;  // per edge / bend: chebyshev stiffness
+  std::vector<float> edgeWeight_;  // per edge: chebyshev stiffness
   std::vector<int> jacobiVertices_;
   int jacobiBendCount_ = 0;
   std::vector<JacobiSpring> limitOf_;  // stretch limits, with limitVertex_ the vertex each belongs to
@@ -252,7 +249,7 @@ class ClothSystem {
   Buffer<JacobiSpring> dSprings_;
   Buffer<JacobiBendRef> dBendRefs_;
   Buffer<ClothBend> dJacobiBends_;
-  Buffer<float> dJacobiBendRest_, dJacobiBendStiffness_, dTetherStiffness_;
+  Buffer<float> dJacobiBendRest_, dJacobiBendStiffness_;
   Buffer<unsigned char> dSolvedByJacobi_;
   Buffer<Float4> dJacobiPrevious_, dJacobiTarget_;
   Buffer<BucketRange> dGridRange_;  // the cloth grid: per bucket

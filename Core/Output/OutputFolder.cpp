@@ -1,12 +1,9 @@
 #include "Output/OutputFolder.h"
 
-#include <algorithm>
-#include <climits>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "Base/Error.h"
 
@@ -15,45 +12,14 @@ namespace soak {
 namespace {
 
 // The absolute, link-free form of `path`, which need not exist: the longest
-// existing prefix is resolved by realpath and the rest appended with "." and
-// ".." folded.
+// existing prefix with its links resolved, the rest with "." and ".." folded.
 std::string canonicalPath(const std::string& path) {
-  std::string absolute = path;
-  if (absolute.empty() || absolute[0] != '/') {
-    char cwd[PATH_MAX];
-    if (!::getcwd(cwd, sizeof(cwd))) return path;
-    absolute = std::string(cwd) + "/" + path;
-  }
-  std::vector<std::string> parts;
-  std::string part;
-  for (std::size_t i = 0; i <= absolute.size(); ++i) {
-    if (i == absolute.size() || absolute[i] == '/') {
-      if (part == "..") {
-        if (!parts.empty()) parts.pop_back();
-      } else if (!part.empty() && part != ".") {
-        parts.push_back(part);
-      }
-      part.clear();
-    } else {
-      part += absolute[i];
-    }
-  }
-  // Resolve links on the longest prefix that exists.
-  std::string resolved = "/";
-  std::size_t k = 0;
-  for (; k <= parts.size(); ++k) {
-    std::string prefix;
-    for (std::size_t j = 0; j < parts.size() - k; ++j) prefix += "/" + parts[j];
-    if (prefix.empty()) prefix = "/";
-    char* real = ::realpath(prefix.c_str(), nullptr);
-    if (!real) continue;
-    resolved = real;
-    std::free(real);
-    break;
-  }
-  for (std::size_t j = parts.size() - std::min(k, parts.size()); j < parts.size(); ++j)
-    resolved += (resolved == "/" ? "" : "/") + parts[j];
-  return resolved;
+  std::error_code error;
+  const std::filesystem::path p = std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+  if (error) return path;
+  std::string text = p.lexically_normal().string();
+  while (text.size() > 1 && text.back() == '/') text.pop_back();
+  return text;
 }
 
 std::string parentOf(const std::string& path) {

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "Base/Error.h"
+#include "Simulation/Runner.h"
 
 namespace soak::cli {
 
@@ -67,16 +68,18 @@ RunArguments parseRunArguments(const std::vector<std::string>& args) {
       if (r.output.empty()) throw InputError(a + " needs a folder name, not an empty string");
     }
     else if (a == "--device") r.device = value();
-    else if (a == "--frames") r.frames = toInteger(a, value(), 0, kMaxFrames);
+    else if (a == "--frames") r.frames = toInteger(a, value(), 0, kMaxRunFrames);
     else if (a == "--time") {
       r.time = toNumber(a, value());
       if (!(r.time >= 0)) throw InputError("--time must be >= 0");
     } else if (a == "--set") r.overrides.push_back(value());
     else if (a == "--plugin") r.plugins.push_back(value());
-    else if (a == "--threads") r.threads = toInteger(a, value(), 1, kMaxThreads); else if (a == "--profile") r.profile = true;
+    else if (a == "--threads") r.threads = toInteger(a, value(), 1, kMaxThreads);
+    else if (a == "--profile") r.profile = true;
     else if (a == "--quiet" || a == "-q") r.quiet = true;
     else if (a == "--check-stages") r.checkStages = true;
-    else if (a == "--checkpoint-every") r.checkpointEvery = toInteger(a, value(), 1, kMaxFrames); else if (a == "--resume") r.resume = value();
+    else if (a == "--checkpoint-every") r.checkpointEvery = toInteger(a, value(), 1, kMaxRunFrames);
+    else if (a == "--resume") r.resume = value();
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see soak help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene per run)");

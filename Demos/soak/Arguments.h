@@ -14,9 +14,8 @@ enum ExitCode {
   kExitInterrupted = 130,
 };
 
-// Limits of the run options (Doc/reliability.md, "Resource limits").
-constexpr int kMaxFrames = 10000000;  // frames of one run (--frames, --checkpoint-every); Runner.h's kMaxRunFrames
-constexpr int kMaxThreads = 1024;     // --threads
+// Most CPU threads --threads may ask for (frames: Runner.h's kMaxRunFrames).
+constexpr int kMaxThreads = 1024;
 
 struct RunArguments {
   std::string scene;
