@@ -16,6 +16,7 @@
 #include <algorithm>
 
 #include "Backend/ForEach.h"
+#include "Base/Lanes.h"
 
 #if defined(__CUDACC__)
 #include <cooperative_groups.h>
@@ -56,6 +57,35 @@ __global__ void soakPhasedKernel(PhaseList phases, F f) {
       grid.sync();
     }
 }
+// The same with a group of 2^shift lanes per item (Base/Lanes.h): the
+// group's lanes take the same k, so they stay together through the loops.
+template <class F>
+__global__ void soakPhasedLanesKernel(PhaseList phases, int shift, F f) {
+  cooperative_groups::grid_group grid = cooperative_groups::this_grid();
+  const int t = blockIdx.x * blockDim.x + threadIdx.x;
+  const int first = t >> shift, stride = (gridDim.x * blockDim.x) >> shift;
+  Lanes l;
+  l.size = 1 << shift;
+  l.index = t & (l.size - 1);
+  l.mask = l.size == 32 ? 0xffffffffu : ((1u << l.size) - 1u) << ((threadIdx.x & 31u) & ~unsigned(l.size - 1));
+  for (int r = 0; r < phases.repeat; ++r)
+    for (int p = 0; p < phases.count; ++p) {
+      for (int k = phases.start[p] + first; k < phases.start[p + 1]; k += stride) f(k, l);
+      grid.sync();
+    }
+}
+
+// Blocks of `kernel` that fit on the GPU at once (0 without cooperative
+// launches); cached per kernel by the caller.
+template <class K>
+int coResidentBlocks(K kernel) {
+  int perSm = 0, sms = 0, dev = 0, cooperative = 0;
+  cudaGetDevice(&dev);
+  cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, dev);
+  cudaDeviceGetAttribute(&cooperative, cudaDevAttrCooperativeLaunch, dev);
+  cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, kernel, kForEachBlockSize, 0);
+  return cooperative ? perSm * sms : 0;
+}
 #endif
 
 template <class F>
@@ -68,15 +98,7 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
     // 256 threads a block: 128 was within 3 % on fig9b and fig6b, 512 and
     // 1024 were 12-15 % slower (H100, Doc/performance.md).
     constexpr int blockSize = kForEachBlockSize;
-    static int maxBlocks = -1;  // co-resident blocks of this kernel on this GPU
-    if (maxBlocks < 0) {
-      int perSm = 0, sms = 0, dev = 0, cooperative = 0;
-      cudaGetDevice(&dev);
-      cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, dev);
-      cudaDeviceGetAttribute(&cooperative, cudaDevAttrCooperativeLaunch, dev);
-      cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, soakPhasedKernel<F>, blockSize, 0);
-      maxBlocks = cooperative ? perSm * sms : 0;
-    }
+    static int maxBlocks = coResidentBlocks(soakPhasedKernel<F>);
     const int blocks = std::min((widest + blockSize - 1) / blockSize, maxBlocks);
     if (blocks > 0) {
       PhaseList list = phases;
@@ -108,6 +130,56 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
     for (int p = 0; p < phases.count; ++p) {
       const int first = phases.start[p];
       forEach(device, phases.start[p + 1] - first, SOAK_LAMBDA(int k) { f(first + k); }, what);
+    }
+}
+
+// forEachPhasedLanes(device, phases, lanes, f): as forEachPhased, calling
+// f(k, lanes) with a group of `lanes` threads per k on the GPU (a power of
+// two, at most 32) and one on the CPU, for phases whose time is a loop over
+// a list (Base/Lanes.h). Without cooperative launches, one launch per phase.
+template <class F>
+void forEachPhasedLanes(Device device, const PhaseList& phases, int lanes, F f, const char* what = "forEachPhasedLanes") {
+  if (phases.count == 0 || phases.repeat <= 0) return;
+  if (device == Device::Cuda) {
+#if defined(__CUDACC__)
+    const int widest = phases.widest();
+    if (widest == 0) return;
+    int shift = 0;
+    while ((1 << shift) < lanes && shift < 5) ++shift;
+    static int maxBlocks = coResidentBlocks(soakPhasedLanesKernel<F>);
+    const long long threads = static_cast<long long>(widest) << shift;
+    const int blocks = static_cast<int>(std::min<long long>((threads + kForEachBlockSize - 1) / kForEachBlockSize, maxBlocks));
+    if (blocks > 0) {
+      PhaseList list = phases;
+      void* args[] = {static_cast<void*>(&list), static_cast<void*>(&shift), static_cast<void*>(&f)};
+      if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(soakPhasedLanesKernel<F>), dim3(blocks),
+                                      dim3(kForEachBlockSize), args, 0, nullptr) == cudaSuccess) {
+        checkLastLaunch(device, what);
+        countLaunch();
+        return;
+      }
+      cudaGetLastError();  // clear the refusal; fall back below
+      maxBlocks = 0;
+    }
+    for (int r = 0; r < phases.repeat; ++r)
+      for (int p = 0; p < phases.count; ++p) {
+        const int first = phases.start[p];
+        forEachLanes(device, phases.start[p + 1] - first, SOAK_LAMBDA(int k, Lanes l) { f(first + k, l); }, what, lanes);
+      }
+    return;
+#else
+    (void)f;
+    throw std::logic_error(std::string(what) +
+                           ": this translation unit was not compiled for CUDA (use soak_physics_sources)");
+#endif
+  }
+  (void)lanes;
+  countLaunch();
+  for (int r = 0; r < phases.repeat; ++r)
+    for (int p = 0; p < phases.count; ++p) {
+      const int first = phases.start[p], end = phases.start[p + 1];
+#pragma omp parallel for schedule(static)
+      for (int k = first; k < end; ++k) f(k, Lanes{});
     }
 }
 

@@ -1,6 +1,9 @@
 // The Jacobi-Chebyshev cloth solve (ClothJacobi.h): one parallel phase per
-// iteration over the vertices of the chebyshev cloths.
-#include "Backend/ForEach.h"
+// iteration over the vertices of the chebyshev cloths, all phases of a
+// sub-step in one cooperative launch on the GPU (Backend/ForEachPhased.h).
+#include <algorithm>
+
+#include "Backend/ForEachPhased.h"
 #include "Base/ReadOnly.h"
 #include "Cloth/ClothSolve.h"
 
@@ -15,91 +18,130 @@ SOAK_INLINE Vec3 clampToTethers(const ClothView& c, int v, const Float4* at, Vec
   for (int t = 0; t < kTethers && pins.pin[t] >= 0; ++t) x = clampToTether(x, at[pins.pin[t]].xyz(), lengths.length[t]);
   return x;
 }
+
+// The stages of one sub-step's solve, in order: gather the predicted
+// positions, the bend pass (if any bends), the iterations, scatter back.
+// Stage s writes iterate buffer s % 2 and reads buffer (s - 1) % 2, so an
+// iteration overwrites x_{k-1}, the one Chebyshev's step reads (each vertex
+// only its own).
+enum JacobiStage : int { kGather, kBend, kIterate, kScatter };
+
+// The stages [base, base + count) of one launch: what each is and, for an
+// iteration, its number (from 1) and Chebyshev weight.
+struct JacobiLaunch {
+  int base = 0;
+  JacobiStage kind[kMaxPhases] = {};
+  float omega[kMaxPhases] = {};
+  short iteration[kMaxPhases] = {};
+};
+
+// Lanes per vertex: a vertex's spring list (edges and stretch limits, about
+// 30 on a large sheet) is split over them.
+constexpr int kJacobiLanes = 8;
 }  // namespace
 
 void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho) {
   const int n = c.jacobiVertexCount;
   if (n == 0 || iterations <= 0) return;
-  // Iterates in vertex order: x_k in `current`, x_{k-1} in `previous`; an
-  // iteration writes x_{k+1} over x_{k-1} (each vertex reads only its own
-  // x_{k-1}) and the two swap.
-  Float4* current = c.vertexScratch;
-  Float4* previous = c.jacobiPrevious;
+  std::vector<JacobiStage> kinds{kGather};
+  if (c.anyJacobiBends) kinds.push_back(kBend);
+  for (int it = 0; it < iterations; ++it) kinds.push_back(kIterate);
+  kinds.push_back(kScatter);
+  const int stages = int(kinds.size());
+  Float4* even = c.vertexScratch;  // iterate buffers 0 and 1
+  Float4* odd = c.jacobiPrevious;
   Float4* target = c.jacobiTarget;
-  forEach(d, n, SOAK_LAMBDA(int k) {
-    const int v = c.jacobiVertices[k];
-    const Float4 x = p.predicted[c.vertexSlot[v]];
-    current[v] = x;
-    target[v] = x;
-  }, "cloth.jacobi.gather");
-  // Bending: one averaged Jacobi pass of Eq. 9's projections.
-  if (c.anyJacobiBends) {
-    const Float4* x = current;
-    Float4* bent = previous;
-    forEach(d, n, SOAK_LAMBDA(int k) {
-      const int v = c.jacobiVertices[k];
-      const Float4 xv = x[v];
-      Vec3 sum(0.f, 0.f, 0.f);
-      int count = 0;
-      if (xv.w != 0.f)
-        for (int r = c.bendRefStart[v], end = c.bendRefStart[v + 1]; r < end; ++r) {
-          const JacobiBendRef ref = loadReadOnly(c.bendRefs + r);
-          const ClothBend bend = loadReadOnly(c.jacobiBends + ref.bend);
-          Vec3 q[4];
-          float w[4];
-          for (int a = 0; a < 4; ++a) {
-            const Float4 xa = x[bend.v[a]];
-            q[a] = xa.xyz();
-            w[a] = xa.w;
-          }
-          addBendCorrection(sum, count, q, w, ref.role, loadReadOnly(c.jacobiBendRest + ref.bend),
-                            loadReadOnly(c.jacobiBendStiffness + ref.bend));
-        }
-      bent[v] = count > 0 ? Float4(xv.xyz() + sum * (1.f / float(count)), xv.w) : xv;
-    }, "cloth.jacobi.bend");
-    previous = current;
-    current = bent;
-  }
   const float invH2 = 1.f / (h * h);
   float omega = 1.f;
-  for (int it = 1; it <= iterations; ++it) {
-    omega = chebyshevWeight(it, rho, omega);
-    const float w = omega;
-    const bool first = it == 1;
-    const Float4* x = current;
-    Float4* next = previous;
-    forEach(d, n, SOAK_LAMBDA(int k) {
-      const int v = c.jacobiVertices[k];
-      const Float4 xv = x[v];
-      if (xv.w == 0.f) {  // pinned or attached: stays where it was put
-        next[v] = xv;
-        return;
+  int iteration = 0;
+  // Stages go to launches of at most kMaxPhases phases (one for up to
+  // kMaxPhases - 3 iterations).
+  for (int base = 0; base < stages; base += kMaxPhases) {
+    JacobiLaunch launch;
+    launch.base = base;
+    PhaseList phases;
+    for (int s = base; s < std::min(stages, base + kMaxPhases); ++s) {
+      const int local = s - base;
+      launch.kind[local] = kinds[s];
+      if (kinds[s] == kIterate) {
+        omega = chebyshevWeight(++iteration, rho, omega);
+        launch.omega[local] = omega;
+        launch.iteration[local] = short(iteration);
       }
-      const Vec3 xi = xv.xyz();
-      JacobiSums s;
-      for (int e = c.springStart[v], end = c.springStart[v + 1]; e < end; ++e) {
-        const JacobiSpring sp = loadReadOnly(c.springs + e);
-        addStretchTerm(s, xi, x[sp.other].xyz(), sp.rest, sp.stiffness, sp.unilateral != 0);
+      phases.add(local * n, (local + 1) * n);
+    }
+    forEachPhasedLanes(d, phases, kJacobiLanes, SOAK_LAMBDA(int k, Lanes l) {
+      const int local = k / n, s = launch.base + local;
+      const int v = c.jacobiVertices[k - local * n];
+      Float4* out = (s & 1) ? odd : even;
+      const Float4* x = (s & 1) ? even : odd;
+      switch (launch.kind[local]) {
+        case kGather: {
+          if (!l.leader()) return;
+          const Float4 y = p.predicted[c.vertexSlot[v]];
+          out[v] = y;
+          target[v] = y;
+          return;
+        }
+        case kBend: {
+          // One averaged Jacobi pass of Eq. 9's projections.
+          const Float4 xv = x[v];
+          Vec3 sum(0.f, 0.f, 0.f);
+          int count = 0;
+          if (xv.w != 0.f)
+            for (int r = c.bendRefStart[v] + l.index, end = c.bendRefStart[v + 1]; r < end; r += l.size) {
+              const JacobiBendRef ref = loadReadOnly(c.bendRefs + r);
+              const ClothBend bend = loadReadOnly(c.jacobiBends + ref.bend);
+              Vec3 q[4];
+              float w[4];
+              for (int a = 0; a < 4; ++a) {
+                const Float4 xa = x[bend.v[a]];
+                q[a] = xa.xyz();
+                w[a] = xa.w;
+              }
+              addBendCorrection(sum, count, q, w, ref.role, loadReadOnly(c.jacobiBendRest + ref.bend),
+                                loadReadOnly(c.jacobiBendStiffness + ref.bend));
+            }
+          sum = laneSum(l, sum);
+          count = laneSum(l, count);
+          if (l.leader()) out[v] = count > 0 ? Float4(xv.xyz() + sum * (1.f / float(count)), xv.w) : xv;
+          return;
+        }
+        case kIterate: {
+          const Float4 xv = x[v];
+          if (xv.w == 0.f) {  // pinned or attached: stays where it was put
+            if (l.leader()) out[v] = xv;
+            return;
+          }
+          const Vec3 xi = xv.xyz();
+          JacobiSums sums;
+          for (int e = c.springStart[v] + l.index, end = c.springStart[v + 1]; e < end; e += l.size) {
+            const JacobiSpring sp = loadReadOnly(c.springs + e);
+            addStretchTerm(sums, xi, x[sp.other].xyz(), sp.rest, sp.stiffness, sp.unilateral != 0);
+          }
+          sums.weighted = laneSum(l, sums.weighted);
+          sums.weight = laneSum(l, sums.weight);
+          if (!l.leader()) return;
+          Vec3 xhat = jacobiMinimum(sums, target[v].xyz(), invH2 / xv.w);
+          // Tethers as hard limits on the Jacobi step's result: their pins
+          // do not move during the solve, so the projection needs no other
+          // vertex's new position and costs no phase; it carries the pins'
+          // hold across the sheet in one iteration (Kim et al. 2012).
+          xhat = clampToTethers(c, v, x, xhat);
+          // Chebyshev: x_{k+1} = omega (xhat - x_{k-1}) + x_{k-1}.
+          const Vec3 before = launch.iteration[local] == 1 ? xhat : out[v].xyz();
+          out[v] = Float4(before + (xhat - before) * launch.omega[local], xv.w);
+          return;
+        }
+        case kScatter: {
+          if (!l.leader()) return;
+          const Float4 xv = x[v];
+          p.predicted[c.vertexSlot[v]] = xv.w == 0.f ? xv : Float4(clampToTethers(c, v, x, xv.xyz()), xv.w);
+          return;
+        }
       }
-      Vec3 xhat = jacobiMinimum(s, target[v].xyz(), invH2 / xv.w);
-      // Tethers as hard limits on the Jacobi step's result: their pins do
-      // not move during the solve, so the projection needs no other
-      // vertex's new position and costs no phase; it carries the pins' hold
-      // across the sheet in one iteration (Kim et al. 2012).
-      xhat = clampToTethers(c, v, x, xhat);
-      // Chebyshev: x_{k+1} = omega (xhat - x_{k-1}) + x_{k-1}.
-      const Vec3 before = first ? xhat : next[v].xyz();
-      const Vec3 out = before + (xhat - before) * w;
-      next[v] = Float4(out, xv.w);
     }, "cloth.jacobi");
-    previous = current;
-    current = next;
   }
-  forEach(d, n, SOAK_LAMBDA(int k) {
-    const int v = c.jacobiVertices[k];
-    const Float4 x = current[v];
-    p.predicted[c.vertexSlot[v]] = x.w == 0.f ? x : Float4(clampToTethers(c, v, current, x.xyz()), x.w);
-  }, "cloth.jacobi.scatter");
 }
 
 }  // namespace soak

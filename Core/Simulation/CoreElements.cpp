@@ -209,9 +209,10 @@ void registerCoreElements(ModuleRegistry& r) {
                      "Cloth sub-steps per step: gravity, constraints and colliders of the cloth advance in steps "
                      "of timeStep / clothSubsteps (less stretch than the same number of iterations in one step).",
                      1, 100)
-            .real("clothSpectralRadius", "", "0.95",
+            .real("clothSpectralRadius", "", "0.6",
                   "Cloth.model=chebyshev: the spectral radius rho its Chebyshev weights assume (Wang 2015); "
-                  "nearer 1 converges further per iteration on large sheets, too near 1 oscillates.",
+                  "nearer 1 converges further per iteration, but from 0.8 a hanging sheet never comes to rest "
+                  "and from 0.9 large sheets can diverge (Doc/design.md, \"Cloth solver\").",
                   0.0, 0.9999)
             .integer("couplingPasses", "2", "Passes of the water-triangle constraint (Eq. 21) per step.", 1, 100)
             .integer("contactPasses", "2", "Passes of cloth self and cloth-cloth contact per step.", 0, 100)

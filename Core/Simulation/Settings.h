@@ -12,7 +12,7 @@ struct SimulationSettings {
   float maxSpeed = 50.f;       // m/s; a faster particle is an instability
   int clothIterations = 8;     // n_s of the cloth constraints (Eq. 5), per cloth sub-step
   int clothSubsteps = 1;       // cloth sub-steps per step (Doc/model.md, "Cloth sub-steps")
-  float clothSpectralRadius = 0.95f;  // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
+  float clothSpectralRadius = 0.6f;   // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
   Vec3 domainMin{-1e3f, -1e3f, -1e3f};  // water leaving this box is drained
   Vec3 domainMax{1e3f, 1e3f, 1e3f};
   float surfaceCellSize = 0.f;  // m; > 0: write a water surface mesh per frame (<WaterSurface>)

@@ -140,6 +140,9 @@ int runCommand(const RunArguments& args) {
     std::fprintf(stderr, "soak: %s on %s%s, %d particles, dt=%g s, %d frames -> %s\n", scene.path().c_str(),
                  deviceName(device), device == Device::Cuda ? (" (" + cudaDeviceDescription() + ")").c_str() : "",
                  sim.particles.count(), double(sim.settings.timeStep), planned, out.c_str());
+    if (!sim.cloth.empty())
+      std::fprintf(stderr, "soak: cloth solve: %d dependent phases per step\n",
+                   sim.cloth.constraintPhasesPerStep(sim.settings.clothIterations, sim.settings.clothSubsteps));
   }
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);
