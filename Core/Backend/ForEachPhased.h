@@ -86,6 +86,28 @@ int coResidentBlocks(K kernel) {
   cudaOccupancyMaxActiveBlocksPerMultiprocessor(&perSm, kernel, kForEachBlockSize, 0);
   return cooperative ? perSm * sms : 0;
 }
+
+// Launches `kernel(args)` as one cooperative grid of 256-thread blocks,
+// enough for `threads` threads but at most maxBlocks (co-resident). False
+// where there is nothing to launch or the GPU refuses; a refusal sets
+// maxBlocks to 0, so later calls go straight to the caller's fallback.
+// 256 threads a block: 128 was within 3 % on fig9b and fig6b, 512 and 1024
+// were 12-15 % slower (H100, Doc/performance.md).
+template <class K>
+bool launchCooperative(K kernel, long long threads, int& maxBlocks, void** args, Device device, const char* what) {
+  const int blocks =
+      static_cast<int>(std::min<long long>((threads + kForEachBlockSize - 1) / kForEachBlockSize, maxBlocks));
+  if (blocks <= 0) return false;
+  if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(kernel), dim3(blocks), dim3(kForEachBlockSize), args, 0,
+                                  nullptr) != cudaSuccess) {
+    cudaGetLastError();  // clear the refusal
+    maxBlocks = 0;
+    return false;
+  }
+  checkLastLaunch(device, what);
+  countLaunch();
+  return true;
+}
 #endif
 
 template <class F>
@@ -95,23 +117,10 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
 #if defined(__CUDACC__)
     const int widest = phases.widest();
     if (widest == 0) return;
-    // 256 threads a block: 128 was within 3 % on fig9b and fig6b, 512 and
-    // 1024 were 12-15 % slower (H100, Doc/performance.md).
-    constexpr int blockSize = kForEachBlockSize;
     static int maxBlocks = coResidentBlocks(soakPhasedKernel<F>);
-    const int blocks = std::min((widest + blockSize - 1) / blockSize, maxBlocks);
-    if (blocks > 0) {
-      PhaseList list = phases;
-      void* args[] = {static_cast<void*>(&list), static_cast<void*>(&f)};
-      if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(soakPhasedKernel<F>), dim3(blocks),
-                                      dim3(blockSize), args, 0, nullptr) == cudaSuccess) {
-        checkLastLaunch(device, what);
-        countLaunch();
-        return;
-      }
-      cudaGetLastError();  // clear the refusal; fall back below
-      maxBlocks = 0;
-    }
+    PhaseList list = phases;
+    void* args[] = {static_cast<void*>(&list), static_cast<void*>(&f)};
+    if (launchCooperative(soakPhasedKernel<F>, widest, maxBlocks, args, device, what)) return;
 #endif
   }
   if (device == Device::Cpu) {
@@ -147,20 +156,11 @@ void forEachPhasedLanes(Device device, const PhaseList& phases, int lanes, F f, 
     int shift = 0;
     while ((1 << shift) < lanes && shift < 5) ++shift;
     static int maxBlocks = coResidentBlocks(soakPhasedLanesKernel<F>);
-    const long long threads = static_cast<long long>(widest) << shift;
-    const int blocks = static_cast<int>(std::min<long long>((threads + kForEachBlockSize - 1) / kForEachBlockSize, maxBlocks));
-    if (blocks > 0) {
-      PhaseList list = phases;
-      void* args[] = {static_cast<void*>(&list), static_cast<void*>(&shift), static_cast<void*>(&f)};
-      if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(soakPhasedLanesKernel<F>), dim3(blocks),
-                                      dim3(kForEachBlockSize), args, 0, nullptr) == cudaSuccess) {
-        checkLastLaunch(device, what);
-        countLaunch();
-        return;
-      }
-      cudaGetLastError();  // clear the refusal; fall back below
-      maxBlocks = 0;
-    }
+    PhaseList list = phases;
+    void* args[] = {static_cast<void*>(&list), static_cast<void*>(&shift), static_cast<void*>(&f)};
+    if (launchCooperative(soakPhasedLanesKernel<F>, static_cast<long long>(widest) << shift, maxBlocks, args, device,
+                          what))
+      return;
     for (int r = 0; r < phases.repeat; ++r)
       for (int p = 0; p < phases.count; ++p) {
         const int first = phases.start[p];
