@@ -168,15 +168,19 @@ class WetClothModule : public Module {
     }
     updatePorosity(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_);
   }
-  void absorb(Simulation& s) { absorbWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_); }
-  void diffuse(Simulation& s) { diffuseWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_); }
+  void absorb(Simulation& s) {
+    absorbWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_, float(s.settings.timeStep));
+  }
+  void diffuse(Simulation& s) {
+    diffuseWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_, float(s.settings.timeStep));
+  }
   void emit(Simulation& s) {
     if (!w_.emission) return;
     WetArrays a = arrays(s);
     ParticleView p = s.particles.view();
     due_.resize(std::size_t(a.cloth.count));
     dripOffset_.resize(std::size_t(a.cloth.count));
-    transferBuffers(s.device(), p, s.grid.view(), a, w_, ref_, due_.data());
+    transferBuffers(s.device(), p, s.grid.view(), a, w_, ref_, float(s.settings.timeStep), due_.data());
     dripSources_.resize(std::size_t(dripRoom_));
     takeDripMass(s.device(), p, a, w_, dripRoom_, due_.data(), dripOffset_.data(), dripSources_.data(),
                  dripCounters_.data());
@@ -261,15 +265,17 @@ WetParams paramsFrom(const ElementParams& e) {
   w.sEW = e.realf("sEW");
   w.sT = e.given("sT") ? e.realf("sT") : 0.3f * w.sMax;
   w.c = e.realf("c");
-  w.kappaA = e.realf("absorptionRate");
+  w.kappaA = perPaperStep(e.real("absorptionRate"));
   w.etaA = e.realf("absorptionGravity");
   w.kappaD = e.realf("diffusionRate");
   w.etaD = e.realf("diffusionGravity");
-  w.kappaS = e.realf("smoothingRate");
+  w.kappaS = perPaperStep(e.real("smoothingRate"));
   w.epsilon = e.realf("diffusionRelaxation");
   w.diffusionIterations = int(e.integer("diffusionIterations"));
   w.form = e.text("diffusionForm") == "literal" ? DiffusionForm::Literal : DiffusionForm::Conservative;
   w.beta = e.realf("emissionBeta");
+  w.bufferShare = perPaperStep(e.real("bufferFlowRate"));
+  w.rates = e.text("wettingRates") == "perStep" ? RateForm::PerStep : RateForm::PerSecond;
   w.mThreshold = e.realf("dripMass");
   w.kappaE = e.realf("dripAttraction");
   w.etaE = e.realf("dripSaturationWeight");
@@ -301,18 +307,33 @@ SOAK_PLUGIN(WetCloth) {
                 "Eq. 10's c in S = c m_water / V (the paper gives no value; 1/rho_water makes S the volume "
                 "fraction of water).",
                 0.0, 1.0, true)
-          .real("absorptionRate", "", "0.1", "kappa^a of Eq. 11.", 0.0, 1.0)
+          .choice("wettingRates", {"perSecond", "perStep"}, "perSecond",
+                  "perSecond: absorptionRate, smoothingRate and bufferFlowRate are rates per second, applied as "
+                  "rate x timeStep each step, so the wetting converges as the time step falls; perStep: the "
+                  "paper's form, rate x 0.015 s each step whatever timeStep is (Doc/model.md, 'Rates per second').")
+          .real("absorptionRate", "1/s", "6.6666667",
+                "kappa^a of Eq. 11 per second (Table 1: 0.1 per step of 0.015 s).", 0.0, 1e4)
           .real("absorptionGravity", "", "0.4",
                 "eta^a of Eq. 11 (Table 1 prints eta^d twice; we read 0.4 as eta^a).", 0.0, 1.0)
           .real("diffusionRate", "", "0.5", "kappa^d of Eq. 12.", 0.0, 1e3)
           .real("diffusionGravity", "", "0.6", "eta^d of Eq. 12.", 0.0, 1.0)
-          .real("smoothingRate", "", "0.8", "kappa^s of Eq. 17.", 0.0, 1.0)
+          .real("smoothingRate", "1/s", "53.333333",
+                "kappa^s of Eq. 17 per second (Table 1: 0.8 per step of 0.015 s). A step runs "
+                "diffusionIterations passes, more where one would move more than kappa^s = 0.8 (at most 256).",
+                0.0, 1e4)
           .real("diffusionRelaxation", "", "0.1", "epsilon of Eq. 15, relative to (sum_j a_ij)^2.", 0.0, 1e6)
-          .integer("diffusionIterations", "1", "Saturation-constraint iterations per step.", 0, 1000)
+          .integer("diffusionIterations", "1",
+                   "Saturation-constraint passes per step (0: no diffusion). Per second they share the step's "
+                   "smoothing; per step each moves kappa^s.",
+                   0, 1000)
           .choice("diffusionForm", {"conservative", "literal"}, "conservative",
                   "conservative: pairwise exchange that conserves water and reduces to Eq. 17 per receiver; "
                   "literal: Eq. 17 as printed (does not conserve water).")
           .real("emissionBeta", "1/s^2", "10", "beta of Eq. 18 (no value in the paper; Doc/model.md says why 10).", 0.0, 1e6)
+          .real("bufferFlowRate", "1/s", "66.666667",
+                "Share of a buffer Eq. 18 moves to the cloth below, per second (the paper moves all of it each "
+                "0.015 s step).",
+                0.0, 1e6)
           .real("dripMass", "kg", "0.002", "m^threshold: buffer mass that becomes a drip (Table 1).", 0.0, 1.0, true)
           .real("dripAttraction", "m/s^2", "10", "kappa^e of Eq. 19 (Table 1).", 0.0, 1e6)
           .real("dripSaturationWeight", "kg", "0.02", "eta^e of Eq. 19 (no value in the paper).", 0.0, 1e3)

@@ -94,9 +94,14 @@ void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const Wet
   }, "wet.porosity", kListLanes);
 }
 
-void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref) {
-  const float c = w.c, sMax = w.sMax, kA = w.kappaA, etaA = w.etaA;
+void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+                 float dt) {
+  // kappa^a of this step: the rate per second times dt (Doc/model.md, "Rates per second").
+  const float c = w.c, sMax = w.sMax, kA = stepFraction(w.kappaA, dt, w.rates), etaA = w.etaA;
   const float m0 = ref.mass, h0 = ref.supportRadius;
+  // A buffer below kBufferFloor x m_threshold does not stop absorption
+  // (Doc/model.md, "Rates per second").
+  const float blocking = kBufferFloor * w.mThreshold;
   const Vec3 gd = ref.gravityDir;
   float* scale = a.scratchA;
   float* ratio = a.scratchB;
@@ -109,8 +114,9 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
     // A particle that already carries excess water (a buffer) takes no more:
     // otherwise the drips it sheds are absorbed again next step, and the
     // same water drips over and over (9,268 drips in 0.6 s from a sheet
-    // holding excess for 1,400; their pushing tore the sheet).
-    if (a.buffer[i] > 0.f) return;
+    // holding excess for 1,400; their pushing tore the sheet). What the
+    // per-second transfer leaves behind (a geometric tail) does not count.
+    if (a.buffer[i] > blocking) return;
     const float cap = maxf(sMax - saturationOf(c, a.held[i], a.volume[i]), 0.f) * a.volume[i] / c;
     if (cap <= 0.f) return;
     const Vec3 xi = p.predicted[i].xyz();
@@ -174,8 +180,10 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
   }, "wet.absorb.water");
 }
 
-void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref) {
-  const float c = w.c, sMax = w.sMax, kD = w.kappaD, etaD = w.etaD, kS = w.kappaS, eps = w.epsilon;
+void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+                  float dt) {
+  const DiffusionSchedule schedule = diffusionSchedule(w, dt);
+  const float c = w.c, sMax = w.sMax, kD = w.kappaD, etaD = w.etaD, kS = schedule.smoothing, eps = w.epsilon;
   const float rho0 = w.clothRestDensity;
   const bool literal = w.form == DiffusionForm::Literal;
   const Vec3 gd = ref.gravityDir;
@@ -183,7 +191,7 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
   float* limit = a.scratchB;
   float* next = a.scratchC;
   float* S = a.saturation;
-  for (int it = 0; it < w.diffusionIterations; ++it) {
+  for (int it = 0; it < schedule.iterations; ++it) {
     // alpha_i = kappa^s sum_j a_ij / (sum_j a_ij^2 + (sum_j a_ij)^2 + eps), so
     // that Eq. 17 reads S_i* = S_i + alpha_i sum_j a_ij (S_j - S_i).
     forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
@@ -260,8 +268,11 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
 }
 
 void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
-                     int* due) {
+                     float dt, int* due) {
   const Vec3 gd = ref.gravityDir;
+  // The share of a buffer that moves this step: all of it in one of the
+  // paper's steps (Doc/model.md, "Rates per second").
+  const float share = minf(stepFraction(w.bufferShare, dt, w.rates), 1.f);
   const float mThr = w.mThreshold;
   const float threshold = w.beta * ref.gravity;
   float* out = a.scratchA;
@@ -293,12 +304,12 @@ void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const We
     pull = laneSum(lanes, pull);
     below = laneSum(lanes, below);
     if (lanes.leader() && length(pull) < threshold && below > 0.f) {
-      out[i] = a.buffer[i];
+      out[i] = share < 1.f ? share * a.buffer[i] : a.buffer[i];
       norm[i] = below;
     }
   }, "wet.emit.decide", kListLanes);
-  // Receivers below take cos(theta_ki) W_ki of the buffer, normalised so the
-  // donor's whole buffer arrives (the paper's weights do not sum to one).
+  // Receivers below take cos(theta_ki) W_ki of what the donor sends,
+  // normalised so all of it arrives (the paper's weights do not sum to one).
   // A particle reads its neighbours' out and norm and only its own buffer,
   // so it writes its new buffer in place.
   forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int k, int v, Lanes lanes) {

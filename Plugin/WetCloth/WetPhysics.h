@@ -48,17 +48,21 @@ void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const Wet
 // wet.absorb (Eq. 11): water particles give water to the cloth particles
 // around them; partial absorption shrinks a particle's mass and radius,
 // whole absorption sets its mass to 0 (the core drains it next step).
-void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref);
+void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+                 float dt);
 
-// wet.diffuse (Eq. 12-17): the saturation constraint, conservative or literal.
-void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref);
+// wet.diffuse (Eq. 12-17): the saturation constraint, conservative or
+// literal, over diffusionSchedule(w, dt)'s passes.
+void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+                  float dt);
 
-// wet.emit, first half (Eq. 18): buffers move to the cloth particles below
-// where gravity overcomes the saturation difference above. due[v] (per
+// wet.emit, first half (Eq. 18): where gravity overcomes the saturation
+// difference above, bufferFlowRate x dt of a buffer (all of it in one of
+// the paper's steps) moves to the cloth particles below. due[v] (per
 // cloth item, ClothSlots order) becomes 1 where the buffer now holds at
 // least m_threshold: a drip is due there (takeDripMass).
 void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
-                     int* due);
+                     float dt, int* due);
 
 // Where a drip starts: its cloth particle's predicted position and velocity.
 struct DripSource {
