@@ -83,6 +83,7 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     edgeRest_.push_back(topo.edgeRestLength[e]);
     edgeStiffness_.push_back(spec.stretch);
     maxEdgeLength_ = std::max(maxEdgeLength_, topo.edgeRestLength[e]);
+    minEdgeLength_ = std::min(minEdgeLength_, topo.edgeRestLength[e]);
   }
   for (std::size_t b = 0; b < topo.bendPairs.size(); ++b) {
     ClothBend cb;

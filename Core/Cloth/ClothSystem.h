@@ -4,6 +4,7 @@
 // Cloth vertices are particles; `vertexSlot` maps a global cloth vertex
 // index (the particle's `id`) to its slot after each neighbour sort.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -166,6 +167,7 @@ class ClothSystem {
   const std::vector<int>& edgeColourStart() const { return edgeColourStart_; }
   const std::vector<int>& bendColourStart() const { return bendColourStart_; }
   float maxEdgeLength() const { return maxEdgeLength_; }
+  float minEdgeLength() const { return minEdgeLength_; }  // shortest rest edge of any cloth
   float maxThickness() const { return maxThickness_; }
   ClothView view();
   // Recomputes vertexSlot and clothSlots from the particles' ids and phases
@@ -229,6 +231,7 @@ class ClothSystem {
   std::vector<int> limitVertex_;
   std::vector<int> edgeColourStart_, bendColourStart_;
   float maxEdgeLength_ = 0.f, maxThickness_ = 0.f;
+  float minEdgeLength_ = std::numeric_limits<float>::max();
   Buffer<ClothEdge> dEdges_;
   Buffer<float> dEdgeRest_, dEdgeLambda_;
   Buffer<ConstraintStiffness> dEdgeStiffness_;

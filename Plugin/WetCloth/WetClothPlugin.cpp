@@ -13,6 +13,7 @@
 #include "Pipeline/Pipeline.h"
 #include "Plugins/PluginApi.h"
 #include "Simulation/Simulation.h"
+#include "FickDiffusion.h"
 #include "WetPhysics.h"
 
 namespace soak::wet {
@@ -172,7 +173,15 @@ class WetClothModule : public Module {
     absorbWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_, float(s.settings.timeStep));
   }
   void diffuse(Simulation& s) {
-    diffuseWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_, float(s.settings.timeStep));
+    const float dt = float(s.settings.timeStep);
+    if (w_.form != DiffusionForm::Fick) {
+      diffuseWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_, dt);
+      return;
+    }
+    if (w_.diffusionIterations == 0) return;
+    // Neighbours closer than half the shortest rest edge: cloth squeezed to half.
+    const int substeps = std::max(w_.diffusionIterations, fickSubsteps(w_, dt, 0.5f * s.cloth.minEdgeLength()));
+    diffuseFick(s.device(), s.particles.view(), arrays(s), w_, ref_, dt, std::min(substeps, kMaxDiffusionPasses));
   }
   void emit(Simulation& s) {
     if (!w_.emission) return;
@@ -272,7 +281,10 @@ WetParams paramsFrom(const ElementParams& e) {
   w.kappaS = perPaperStep(e.real("smoothingRate"));
   w.epsilon = e.realf("diffusionRelaxation");
   w.diffusionIterations = int(e.integer("diffusionIterations"));
-  w.form = e.text("diffusionForm") == "literal" ? DiffusionForm::Literal : DiffusionForm::Conservative;
+  const std::string form = e.text("diffusionForm");
+  w.form = form == "literal" ? DiffusionForm::Literal : form == "fick" ? DiffusionForm::Fick : DiffusionForm::Conservative;
+  w.diffusivity = e.realf("diffusivity");
+  w.drainageSpeed = e.realf("drainageSpeed");
   w.beta = e.realf("emissionBeta");
   w.bufferShare = perPaperStep(e.real("bufferFlowRate"));
   w.rates = e.text("wettingRates") == "perStep" ? RateForm::PerStep : RateForm::PerSecond;
@@ -326,9 +338,18 @@ SOAK_PLUGIN(WetCloth) {
                    "Saturation-constraint passes per step (0: no diffusion). Per second they share the step's "
                    "smoothing; per step each moves kappa^s.",
                    0, 1000)
-          .choice("diffusionForm", {"conservative", "literal"}, "conservative",
+          .choice("diffusionForm", {"conservative", "literal", "fick"}, "conservative",
                   "conservative: pairwise exchange that conserves water and reduces to Eq. 17 per receiver; "
-                  "literal: Eq. 17 as printed (does not conserve water).")
+                  "literal: Eq. 17 as printed (does not conserve water); fick: Fick's law with diffusivity and "
+                  "drainageSpeed, set from a fabric's measured wicking (Doc/model.md, 'Fick diffusion').")
+          .real("diffusivity", "m^2/s", "1e-4",
+                "diffusionForm=fick: D of dS/dt = div(D grad S); a wicking front rises as h^2 = K t with "
+                "K = 4 D erfc^-1(S_front / S_bath)^2.",
+                0.0, 10.0)
+          .real("drainageSpeed", "m/s", "0",
+                "diffusionForm=fick: speed at which gravity drains water down the fabric; a wicking front levels "
+                "off at (diffusivity / drainageSpeed) ln(S_bath / S_front).",
+                0.0, 100.0)
           .real("emissionBeta", "1/s^2", "10", "beta of Eq. 18 (no value in the paper; Doc/model.md says why 10).", 0.0, 1e6)
           .real("bufferFlowRate", "1/s", "66.666667",
                 "Share of a buffer Eq. 18 moves to the cloth below, per second (the paper moves all of it each "

@@ -6,7 +6,7 @@
 
 namespace soak::wet {
 
-enum class DiffusionForm { Conservative = 0, Literal = 1 };
+enum class DiffusionForm { Conservative = 0, Literal = 1, Fick = 2 };
 
 // The paper's rates (Table 1) are fractions per step of its time step,
 // 0.015 s. PerSecond reads them as rates per second (rate x dt per step), so
@@ -30,6 +30,10 @@ struct WetParams {
   float epsilon = 0.1f;        // Eq. 15 relaxation, relative to (sum_j a_ij)^2
   int diffusionIterations = 1;
   DiffusionForm form = DiffusionForm::Conservative;
+  // DiffusionForm::Fick (FickDiffusion.h): Fick's law with a diffusivity
+  // and a gravity drainage speed, in place of Eq. 12-17.
+  float diffusivity = 1e-4f;   // m^2/s
+  float drainageSpeed = 0.f;   // m/s
   float beta = 10.f;           // Eq. 18; see Doc/model.md
   float bufferShare = 1.f;     // share of a buffer Eq. 18 moves down, per 0.015 s
   RateForm rates = RateForm::PerSecond;

@@ -1,0 +1,122 @@
+#include "FickDiffusion.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "Backend/ForEach.h"
+#include "WetKernels.h"
+
+namespace soak::wet {
+
+namespace {
+
+// The pair weight w(r) = h - r: the shape of the viscosity kernel's
+// Laplacian (Eq. 12's), positive on the whole support. Its scale cancels in
+// the normalised Laplacian below.
+SOAK_INLINE float pairWeight(float r2, float hi, float hj) {
+  const float h = pairSupport(hi, hj);
+  if (r2 >= h * h || r2 == 0.f) return 0.f;
+  return h - sqrtf(r2);
+}
+
+// What a cloth particle's side of a pair needs.
+struct FickPoint {
+  Vec3 x;
+  float h, S, V, norm;
+};
+
+// Water (kg/s) flowing into a from b. The Laplacian is normalised per
+// particle, L S_a = sum_b w~_ab (S_b - S_a) with w~_ab = 2 w_ab (1/N_a +
+// 1/N_b) and N = sum w r^2, which is exact for a quadratic field on a
+// surface (sum w~ r^2 = 4) and symmetric, so a pair's two sides see one
+// flux. Drainage moves water from the particle above to the one below at
+// u times their height difference along gravity (upwind).
+SOAK_INLINE float fickFlux(const FickPoint& a, const FickPoint& b, float D, float u, float c, Vec3 g) {
+  const Vec3 xab = a.x - b.x;
+  const float w = pairWeight(lengthSquared(xab), a.h, b.h);
+  if (w == 0.f || a.norm <= 0.f || b.norm <= 0.f) return 0.f;
+  const float wt = 2.f * w * (1.f / a.norm + 1.f / b.norm);
+  const float drop = dot(xab, g);  // > 0: a lies below b
+  const float drain = drop > 0.f ? drop * b.S : drop * a.S;
+  return 0.5f * (a.V + b.V) / c * wt * (D * (b.S - a.S) + u * drain);
+}
+
+SOAK_INLINE FickPoint fickPoint(const ParticleView& p, const float* S, const float* V, const float* norm, int k) {
+  return FickPoint{p.predicted[k].xyz(), p.radius[k], S[k], V[k], norm[k]};
+}
+
+// The flux into slot i from slot j, evaluated with the lower slot first so
+// that both sides of the pair compute the same bits.
+SOAK_INLINE float fluxInto(int i, const FickPoint& pi, int j, const FickPoint& pj, float D, float u, float c, Vec3 g) {
+  return i < j ? fickFlux(pi, pj, D, u, c, g) : -fickFlux(pj, pi, D, u, c, g);
+}
+
+}  // namespace
+
+int fickSubsteps(const WetParams& w, float dt, float closest) {
+  // Explicit diffusion stays monotone while dt sum_j w~_ij (D + u |d_ij|)
+  // <= 1; with sum_j w~ r^2 = 4 and r >= closest that sum is at most
+  // 4 D / closest^2 + 4 u / closest. Half of that bound, for margin.
+  if (!(closest > 0.f)) return 1;
+  const double rate = 4.0 * w.diffusivity / (double(closest) * closest) + 4.0 * w.drainageSpeed / closest;
+  const double n = std::ceil(double(dt) * rate / 0.5);
+  return int(std::min(std::max(n, 1.0), double(kMaxDiffusionPasses)));
+}
+
+void diffuseFick(Device d, ParticleView p, WetArrays a, const WetParams& w, WaterReference ref, float dt,
+                 int substeps) {
+  const float c = w.c, D = w.diffusivity, u = w.drainageSpeed, h = dt / float(substeps);
+  const Vec3 g = ref.gravityDir;
+  float* norm = a.scratchA;
+  float* limit = a.scratchB;
+  float* next = a.scratchC;
+  float* S = a.saturation;
+  // N_i = sum_j w_ij r_ij^2 over the particle's own cloth; the cloth does
+  // not move while the water spreads.
+  forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+    const Vec3 xi = p.predicted[i].xyz();
+    const float hi = p.radius[i];
+    float n = 0.f;
+    forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
+      if (j == i || p.phase[j] != p.phase[i]) return;
+      const float r2 = lengthSquared(xi - p.predicted[j].xyz());
+      n += pairWeight(r2, hi, p.radius[j]) * r2;
+    });
+    n = laneSum(lanes, n);
+    if (!lanes.leader()) return;
+    norm[i] = n;
+    S[i] = saturationOf(c, a.held[i], a.volume[i]);
+  }, "wet.fick.norm", kListLanes);
+  const float* V = a.volume;
+  for (int step = 0; step < substeps; ++step) {
+    // What each particle would give this sub-step, scaled down where that
+    // is more than it holds.
+    forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+      const FickPoint pi = fickPoint(p, S, V, norm, i);
+      float out = 0.f;
+      forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
+        if (j == i || p.phase[j] != p.phase[i]) return;
+        out += maxf(-fluxInto(i, pi, j, fickPoint(p, S, V, norm, j), D, u, c, g), 0.f);
+      });
+      out = laneSum(lanes, out) * h;
+      if (lanes.leader()) limit[i] = out > a.held[i] ? a.held[i] / out : 1.f;
+    }, "wet.fick.limit", kListLanes);
+    forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+      const FickPoint pi = fickPoint(p, S, V, norm, i);
+      float change = 0.f;
+      forEachClothNeighbour(a.clothNeighbours, v, lanes, [&](int j) {
+        if (j == i || p.phase[j] != p.phase[i]) return;
+        const float f = fluxInto(i, pi, j, fickPoint(p, S, V, norm, j), D, u, c, g);
+        change += f * (f > 0.f ? limit[j] : limit[i]);
+      });
+      change = laneSum(lanes, change) * h;
+      if (lanes.leader()) next[i] = maxf(a.held[i] + change, 0.f);
+    }, "wet.fick.exchange", kListLanes);
+    forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
+      a.held[i] = next[i];
+      S[i] = saturationOf(c, next[i], a.volume[i]);
+    }, "wet.fick.apply");
+  }
+}
+
+}  // namespace soak::wet
