@@ -13,7 +13,7 @@ namespace soak {
 ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
-      dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
+      dBendRest_(device), dMaterialCoord_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
       dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
@@ -28,6 +28,7 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   obj.firstTriangle = int(triangles_.size());
   obj.triangleCount = int(spec.mesh.triangles.size());
   obj.localTriangles = spec.mesh.triangles;
+  obj.hasMaterialCoordinates = spec.mesh.uv.size() == spec.mesh.vertices.size();
   const bool jacobi = spec.model == ClothModel::Chebyshev;
 
   float thickness = spec.thickness;
@@ -49,6 +50,8 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     q.id = first + int(v);
     q.pinned = pinned[v] != 0;
     restPosition_.push_back(spec.mesh.vertices[v]);
+    materialCoord_.push_back(spec.mesh.uv.empty() ? Vec3(0.f, 0.f, 0.f)
+                                                  : Vec3(spec.mesh.uv[v][0], spec.mesh.uv[v][1], 0.f));
     jacobi_.push_back(jacobi ? 1 : 0);
     attach_.push_back(pinned[v] ? spec.attachCollider : -1);
     thickness_.push_back(thickness);
@@ -183,6 +186,7 @@ void ClothSystem::upload() {
   dFirstTri_.upload(firstList);
   dTriangleSnapshot_.resize(firstList.size());
   dRest_.upload(restPosition_);
+  dMaterialCoord_.upload(materialCoord_);
   dAttach_.upload(attach_);
   dThickness_.upload(thickness_);
   dTetherPin_.upload(tetherPin_);
@@ -264,6 +268,7 @@ ClothView ClothSystem::view() {
   v.firstVertexTriangles = dFirstTri_.data();
   v.triangleSnapshot = dTriangleSnapshot_.data();
   v.restPosition = dRest_.data();
+  v.materialCoord = dMaterialCoord_.data();
   v.attachCollider = dAttach_.data();
   v.thickness = dThickness_.data();
   v.maxEdgeLength = maxEdgeLength_;

@@ -83,6 +83,10 @@ struct ClothView {
   const ClothTriangle* firstVertexTriangles = nullptr;
   TriangleSnapshot* triangleSnapshot = nullptr;  // per firstVertexTriangles entry (see TriangleSnapshot)
   const Vec3* restPosition = nullptr;  // per vertex, as created
+  // Per vertex: material coordinates (u, v, 0): warp along u, weft along v
+  // (a sheet's axes in metres, or a mesh's vt; 0 where the mesh has none,
+  // ClothObject::hasMaterialCoordinates).
+  const Vec3* materialCoord = nullptr;
   const int* attachCollider = nullptr; // per vertex: collider index it moves with, or -1
   const float* thickness = nullptr;    // per vertex: cloth thickness (contact distance), m
   int* vertexSlot = nullptr;           // per vertex: current particle slot
@@ -149,6 +153,7 @@ struct ClothObject {
   int firstTriangle = 0, triangleCount = 0;
   int firstEdge = 0, edgeCount = 0;  // in creation order (host)
   std::vector<std::array<int, 3>> localTriangles;  // for output
+  bool hasMaterialCoordinates = false;  // a sheet, or a mesh with vt for every vertex
 };
 
 class ClothSystem {
@@ -217,7 +222,7 @@ class ClothSystem {
   std::vector<float> bendRest_;
   std::vector<ConstraintStiffness> bendStiffness_;
   std::vector<ClothTriangle> triangles_;
-  std::vector<Vec3> restPosition_;
+  std::vector<Vec3> restPosition_, materialCoord_;
   std::vector<int> attach_;
   std::vector<float> thickness_;
   std::vector<int> tetherPin_;
@@ -244,7 +249,7 @@ class ClothSystem {
   Buffer<TriangleSnapshot> dTriangleSnapshot_;
   Buffer<float> dThickness_, dTetherLength_;
   Buffer<int> dTetherPin_;
-  Buffer<Vec3> dRest_;
+  Buffer<Vec3> dRest_, dMaterialCoord_;
   Buffer<Float4> dVertexScratch_;
   Buffer<int> dClothFlag_, dClothOffset_, dClothSlots_;  // per particle, per particle, per vertex
   bool anyTethers_ = false;  // some vertex has a tether (set by upload())

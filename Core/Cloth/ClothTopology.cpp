@@ -65,6 +65,7 @@ TriangleMesh makeRectangularSheet(Vec3 origin, Vec3 axisU, Vec3 axisV, float siz
     for (int i = 0; i <= cellsU; ++i) {
       Eigen::Vector3f p = o + u * (sizeU * float(i) / float(cellsU)) + v * (sizeV * float(j) / float(cellsV));
       m.vertices.push_back(Vec3(p.x(), p.y(), p.z()));
+      m.uv.push_back({sizeU * float(i) / float(cellsU), sizeV * float(j) / float(cellsV)});
     }
   auto id = [&](int i, int j) { return j * (cellsU + 1) + i; };
   for (int j = 0; j < cellsV; ++j)

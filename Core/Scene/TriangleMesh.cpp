@@ -77,6 +77,17 @@ TriangleMesh loadObjMesh(const std::string& path) {
       const int line = face < faceLines.size() ? faceLines[face] : 0;
       const std::string where = line > 0 ? path + ":" + std::to_string(line) : path;
       if (k < 3) throw InputError("face has " + std::to_string(k) + " vertices; a face needs at least 3", where);
+      // A vertex's material coordinates: the first vt a face gives it.
+      for (int c = 0; c < k && !attrib.texcoords.empty(); ++c) {
+        const tinyobj::index_t ix = shape.mesh.indices[offset + std::size_t(c)];
+        if (ix.texcoord_index < 0 || std::size_t(ix.vertex_index) >= nv ||
+            2 * std::size_t(ix.texcoord_index) + 1 >= attrib.texcoords.size())
+          continue;
+        if (mesh.uv.empty()) mesh.uv.assign(nv, {std::nanf(""), std::nanf("")});
+        auto& uv = mesh.uv[std::size_t(ix.vertex_index)];
+        if (std::isnan(uv[0]))
+          uv = {attrib.texcoords[2 * std::size_t(ix.texcoord_index)], attrib.texcoords[2 * std::size_t(ix.texcoord_index) + 1]};
+      }
       for (int c = 1; c + 1 < k; ++c) {  // a fan: (0, c, c+1)
         mesh.triangles.push_back({shape.mesh.indices[offset].vertex_index, shape.mesh.indices[offset + c].vertex_index,
                                   shape.mesh.indices[offset + c + 1].vertex_index});
@@ -85,6 +96,12 @@ TriangleMesh loadObjMesh(const std::string& path) {
       offset += std::size_t(k);
     }
   }
+  // Material coordinates only where every vertex has them.
+  for (const auto& uv : mesh.uv)
+    if (!std::isfinite(uv[0]) || !std::isfinite(uv[1])) {
+      mesh.uv.clear();
+      break;
+    }
   validateClothMesh(mesh, path);
   return mesh;
 }

@@ -13,6 +13,9 @@ struct TriangleMesh {
   // Line of the source file each triangle comes from (empty if none), so
   // that errors name file:line.
   std::vector<int> triangleLines;
+  // Material coordinates per vertex (m, or the OBJ's vt): the fabric's warp
+  // runs along u and its weft along v. Empty where the source has none.
+  std::vector<std::array<float, 2>> uv;
 };
 
 // Loads an OBJ file through tinyobjloader (polygons are split into fans).

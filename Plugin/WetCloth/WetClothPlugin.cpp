@@ -28,6 +28,12 @@ class WetClothModule : public Module {
     if (sim.cloth.empty()) throw InputError("<WetCloth>: the scene has no <Cloth> to wet", where_);
     if (!(w_.sEW < w_.sMax)) throw InputError("<WetCloth>: sEW must be below sMax", where_);
     if (!(w_.sT < w_.sMax)) throw InputError("<WetCloth>: sT must be below sMax", where_);
+    if (weftDiffusivity(w_) != w_.diffusivity)
+      for (const ClothObject& o : sim.cloth.objects())
+        if (!o.hasMaterialCoordinates)
+          throw InputError("<WetCloth>: diffusivityWeft needs the warp and weft of every cloth, and cloth '" + o.name +
+                               "' is a mesh without texture coordinates (vt) for every vertex",
+                           where_);
     ParticleState& ps = sim.particles;
     held_ = ps.addChannel("held_water");
     buffer_ = ps.addChannel("buffer");
@@ -181,7 +187,8 @@ class WetClothModule : public Module {
     if (w_.diffusionIterations == 0) return;
     // Neighbours closer than half the shortest rest edge: cloth squeezed to half.
     const int substeps = std::max(w_.diffusionIterations, fickSubsteps(w_, dt, 0.5f * s.cloth.minEdgeLength()));
-    diffuseFick(s.device(), s.particles.view(), arrays(s), w_, ref_, dt, std::min(substeps, kMaxDiffusionPasses));
+    diffuseFick(s.device(), s.particles.view(), arrays(s), s.cloth.view().materialCoord, w_, ref_, dt,
+                std::min(substeps, kMaxDiffusionPasses));
   }
   void emit(Simulation& s) {
     if (!w_.emission) return;
@@ -285,6 +292,7 @@ WetParams paramsFrom(const ElementParams& e) {
   w.form = form == "literal" ? DiffusionForm::Literal : form == "fick" ? DiffusionForm::Fick : DiffusionForm::Conservative;
   w.diffusivity = e.realf("diffusivity");
   w.drainageSpeed = e.realf("drainageSpeed");
+  w.diffusivityWeft = e.realf("diffusivityWeft");
   w.beta = e.realf("emissionBeta");
   w.bufferShare = perPaperStep(e.real("bufferFlowRate"));
   w.rates = e.text("wettingRates") == "perStep" ? RateForm::PerStep : RateForm::PerSecond;
@@ -346,6 +354,11 @@ SOAK_PLUGIN(WetCloth) {
                 "diffusionForm=fick: D of dS/dt = div(D grad S); a wicking front rises as h^2 = K t with "
                 "K = 4 D erfc^-1(S_front / S_bath)^2.",
                 0.0, 10.0)
+          .real("diffusivityWeft", "m^2/s", "-1",
+                "diffusionForm=fick: D along the weft (the cloth's v axis, or the mesh's vt v); diffusivity is "
+                "then the warp's (u). Negative: the same as diffusivity. A wet spot spreads into an ellipse with "
+                "axes in the ratio sqrt(diffusivity / diffusivityWeft).",
+                -1.0, 10.0)
           .real("drainageSpeed", "m/s", "0",
                 "diffusionForm=fick: speed at which gravity drains water down the fabric; a wicking front levels "
                 "off at (diffusivity / drainageSpeed) ln(S_bath / S_front).",

@@ -32,7 +32,8 @@ struct WetParams {
   DiffusionForm form = DiffusionForm::Conservative;
   // DiffusionForm::Fick (FickDiffusion.h): Fick's law with a diffusivity
   // and a gravity drainage speed, in place of Eq. 12-17.
-  float diffusivity = 1e-4f;   // m^2/s
+  float diffusivity = 1e-4f;   // m^2/s, along the warp (material u)
+  float diffusivityWeft = -1.f;  // m^2/s, along the weft (material v); < 0: the warp's
   float drainageSpeed = 0.f;   // m/s
   float beta = 10.f;           // Eq. 18; see Doc/model.md
   float bufferShare = 1.f;     // share of a buffer Eq. 18 moves down, per 0.015 s
@@ -51,6 +52,8 @@ struct WetParams {
 // a share of a buffer each step and leaves a tail that shrinks
 // geometrically (Doc/model.md, "Rates per second").
 constexpr float kBufferFloor = 1e-3f;
+
+inline float weftDiffusivity(const WetParams& w) { return w.diffusivityWeft >= 0.f ? w.diffusivityWeft : w.diffusivity; }
 
 // What a process that does `perPaperStep` in 0.015 s does in one step of dt.
 inline float stepFraction(float perPaperStep, float dt, RateForm form) {

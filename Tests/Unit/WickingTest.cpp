@@ -118,3 +118,60 @@ TEST(Wicking, FrontRisesAsLucasWashburnWithTheKSetAndLevelsOffUnderGravity) {
   // The same 20 s without drainage climbs far higher.
   EXPECT_GT(fit.edge + std::sqrt(kSet * 20.0), heightAt(20.0) + 0.1);
 }
+
+TEST(Wicking, WarpAndWeftDiffusivitiesSpreadAWetSpotIntoAnEllipse) {
+  // A wet spot on a horizontal sheet (gravity normal to it, so no
+  // drainage) spreads with the diffusivity of each direction: the water's
+  // second moment along the warp (x) grows as 2 D_warp t and along the weft
+  // (z) as 2 D_weft t, so the patch (S > 0.005) becomes an ellipse with axes in the
+  // ratio sqrt(D_warp / D_weft) = 1.73 (3, the largest ratio the pair
+  // weights reproduce exactly: FickDiffusion.cpp).
+  const double Du = 0.003, Dv = 0.001;
+  test::TestRegistry reg(SOAK_PLUGIN_DIR);
+  auto sim = test::makeSimulation(
+      "<Scene><Simulation gravity='0 -0.000001 0'/>"
+      "<Cloth origin='-0.4 0.5 -0.4' axisU='1 0 0' axisV='0 0 1' width='0.8' height='0.8' cellsU='40' cellsV='40' "
+      "pinCorners='u0v0 u1v0 u0v1 u1v1' tethers='false'/>"
+      "<WetCloth diffusionForm='fick' diffusivity='" +
+          std::to_string(Du) + "' diffusivityWeft='" + std::to_string(Dv) +
+          "' emission='false' sticking='false' wetWeight='false'/></Scene>",
+      Device::Cpu, reg);
+  sim->step();  // volumes
+  const int heldChannel = sim->particles.findChannel("held_water");
+  {
+    const std::vector<float> V = sim->particles.downloadChannel(sim->particles.findChannel("volume"));
+    ParticleView p = sim->particles.view();
+    float* held = sim->particles.channel(heldChannel);
+    for (int i = 0; i < p.count; ++i) {
+      const Vec3 x = p.position[i].xyz();
+      held[i] = isCloth(p.phase[i]) && x.x * x.x + x.z * x.z < 0.03f * 0.03f ? 0.3f * V[i] / 0.001f : 0.f;
+    }
+  }
+  const auto moments = [&](double& mx, double& mz, double& total, double& extentX, double& extentZ) {
+    const std::vector<float> held = sim->particles.downloadChannel(heldChannel);
+    const std::vector<float> S = sim->particles.downloadChannel(sim->particles.findChannel("saturation"));
+    const std::vector<Float4> x = sim->particles.downloadPositions();
+    double m = 0, sx = 0, sz = 0;
+    extentX = extentZ = 0;
+    for (std::size_t i = 0; i < held.size(); ++i) {
+      m += held[i], sx += held[i] * x[i].x * x[i].x, sz += held[i] * x[i].z * x[i].z;
+      if (S[i] > 0.005f) extentX = std::max(extentX, double(std::fabs(x[i].x))), extentZ = std::max(extentZ, double(std::fabs(x[i].z)));
+    }
+    mx = sx / m, mz = sz / m, total = m;
+  };
+  double x0, z0, m0, ex, ez;
+  moments(x0, z0, m0, ex, ez);
+  const double t0 = sim->time();
+  while (sim->time() < t0 + 2.0) sim->step();
+  double x1, z1, m1;
+  moments(x1, z1, m1, ex, ez);
+  const double t = sim->time() - t0;
+  const double fitDu = (x1 - x0) / (2 * t), fitDv = (z1 - z0) / (2 * t);
+  std::printf("after %.2f s: D along the warp %.5f m^2/s (set %.5f), along the weft %.5f (set %.5f); wet patch "
+              "%.3f x %.3f m (ratio %.2f); water %.6f -> %.6f kg\n",
+              t, fitDu, Du, fitDv, Dv, 2 * ex, 2 * ez, ex / ez, m0, m1);
+  EXPECT_NEAR(fitDu / Du, 1.0, 0.1);
+  EXPECT_NEAR(fitDv / Dv, 1.0, 0.1);
+  EXPECT_NEAR(ex / ez, std::sqrt(Du / Dv), 0.25);
+  EXPECT_NEAR(m1, m0, 1e-5 * m0);
+}
