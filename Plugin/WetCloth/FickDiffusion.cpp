@@ -132,10 +132,7 @@ void diffuseFick(Device d, ParticleView p, WetArrays a, const Vec3* material, co
       change = laneSum(lanes, change) * h;
       if (lanes.leader()) next[i] = maxf(a.held[i] + change, 0.f);
     }, "wet.fick.exchange", kListLanes);
-    forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-      a.held[i] = next[i];
-      S[i] = saturationOf(c, next[i], a.volume[i]);
-    }, "wet.fick.apply");
+    applyHeldWater(d, a, c, "wet.fick.apply");
   }
 }
 

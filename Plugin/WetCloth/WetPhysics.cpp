@@ -260,11 +260,16 @@ void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
         if (lanes.leader()) next[i] = maxf(a.held[i] + change, 0.f);
       }, "wet.diffuse.exchange", kListLanes);
     }
-    forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
-      a.held[i] = next[i];
-      S[i] = saturationOf(c, next[i], a.volume[i]);
-    }, "wet.diffuse.apply");
+    applyHeldWater(d, a, c, "wet.diffuse.apply");
   }
+}
+
+void applyHeldWater(Device d, WetArrays a, float c, const char* stage) {
+  const float* next = a.scratchC;
+  forEachClothParticle(d, a.cloth, SOAK_LAMBDA(int i) {
+    a.held[i] = next[i];
+    a.saturation[i] = saturationOf(c, next[i], a.volume[i]);
+  }, stage);
 }
 
 void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,

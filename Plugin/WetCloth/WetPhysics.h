@@ -56,6 +56,10 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
 void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
                   float dt);
 
+// The diffusion passes' last kernel: held water becomes scratchC (the next
+// values a pass computed), and the saturation follows (Eq. 10).
+void applyHeldWater(Device d, WetArrays a, float c, const char* stage);
+
 // wet.emit, first half (Eq. 18): where gravity overcomes the saturation
 // difference above, bufferFlowRate x dt of a buffer (all of it in one of
 // the paper's steps) moves to the cloth particles below. due[v] (per
