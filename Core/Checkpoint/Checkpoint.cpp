@@ -1,10 +1,13 @@
 #include "Checkpoint/Checkpoint.h"
 
+#include <sys/stat.h>
+
 #include <cstring>
 #include <fstream>
 #include <iterator>
 
 #include "Base/Error.h"
+#include "Base/ReadInput.h"
 #include "Checkpoint/StateStream.h"
 #include "Output/FrameWriter.h"
 #include "Output/VtkFiles.h"
@@ -14,6 +17,10 @@ namespace soak {
 
 namespace {
 constexpr char kMagic[8] = {'S', 'O', 'A', 'K', 'C', 'K', 'P', 'T'};
+bool fileExists(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0;
+}
 constexpr std::size_t kPrefix = sizeof(kMagic) + sizeof(std::uint32_t) + sizeof(std::uint64_t);
 
 void putHeader(StateWriter& out, const CheckpointHeader& h) {
@@ -66,9 +73,11 @@ void writeCheckpoint(const std::string& path, const CheckpointHeader& header, co
 }
 
 Checkpoint Checkpoint::read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("no checkpoint here (a run writes one with --checkpoint-every N)", path);
-  std::vector<char> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!fileExists(path)) throw InputError("no checkpoint here (a run writes one with --checkpoint-every N)", path);
+  return fromBytes(readInputFile(path, kMaxCheckpointBytes, "checkpoint"), path);
+}
+
+Checkpoint Checkpoint::fromBytes(const std::string& file, const std::string& path) {
   if (file.size() < kPrefix + sizeof(std::uint64_t) || std::memcmp(file.data(), kMagic, sizeof(kMagic)) != 0)
     throw InputError("not a Soak checkpoint (wrong magic bytes or too short)", path);
   std::uint32_t version = 0;
@@ -96,14 +105,18 @@ Checkpoint Checkpoint::read(const std::string& path) {
   return c;
 }
 
-void Checkpoint::restore(FrameWriter& writer, Simulation& sim) const {
+FrameWriter::ResumeState Checkpoint::load(const FrameWriter& writer, Simulation& sim) const {
   StateReader in(payload_.data() + stateOffset_, payload_.size() - stateOffset_, path_);
-  // Everything is read and checked before the output folder is touched: a
-  // refused resume leaves the run it refuses as it was.
   const FrameWriter::ResumeState output = writer.readResumeState(in);
   sim.loadState(in);
   if (!in.atEnd()) in.fail("it holds more state than this scene reads");
-  writer.resume(output);
+  return output;
+}
+
+void Checkpoint::restore(FrameWriter& writer, Simulation& sim) const {
+  // Everything is read and checked before the output folder is touched: a
+  // refused resume leaves the run it refuses as it was.
+  writer.resume(load(writer, sim));
 }
 
 }  // namespace soak

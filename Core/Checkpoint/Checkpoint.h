@@ -14,10 +14,11 @@
 #include <string>
 #include <vector>
 
+#include "Output/FrameWriter.h"
+
 namespace soak {
 
 class Simulation;
-class FrameWriter;
 
 struct CheckpointHeader {
   std::string scenePath;  // absolute path of the scene file (relative meshes resolve from its folder)
@@ -41,10 +42,16 @@ void writeCheckpoint(const std::string& path, const CheckpointHeader& header, co
 class Checkpoint {
  public:
   static Checkpoint read(const std::string& path);
+  // The same from a file's bytes (`path` names it in messages).
+  static Checkpoint fromBytes(const std::string& file, const std::string& path);
   const CheckpointHeader& header() const { return header_; }
   // Restores the writer's and the simulation's state. The simulation must be
   // built from header().sceneText; a mismatch is refused with InputError.
   void restore(FrameWriter& writer, Simulation& sim) const;
+  // restore() without its last part: reads and checks the writer's state
+  // against its folder and loads the simulation's, then returns the
+  // writer's state for FrameWriter::resume; nothing on disk is touched.
+  FrameWriter::ResumeState load(const FrameWriter& writer, Simulation& sim) const;
 
  private:
   std::string path_;

@@ -27,12 +27,13 @@ class ClothModule : public Module {
     const std::string& where = p_.where();
     ClothSpec spec;
     spec.name = p_.text("name");
+    spec.where = where;
     for (const auto& o : sim.cloth.objects())
       if (o.name == spec.name) throw InputError("<Cloth>: a cloth named '" + spec.name + "' already exists", where);
     const std::string meshFile = p_.text("mesh");
     const int cellsU = int(p_.integer("cellsU")), cellsV = int(p_.integer("cellsV"));
     if (meshFile.empty()) {
-      sim.checkParticleBudget((long long)(cellsU + 1) * (long long)(cellsV + 1), "<Cloth>", where);
+      sim.checkParticleBudget(double(cellsU + 1) * double(cellsV + 1), "<Cloth>", where);
       Vec3 u = p_.vector("axisU"), v = p_.vector("axisV");
       if (length(u) < 1e-9f || length(v) < 1e-9f || length(cross(u, v)) < 1e-6f * length(u) * length(v))
         throw InputError("<Cloth>: axisU and axisV must be non-zero and not parallel", where);
@@ -42,6 +43,7 @@ class ClothModule : public Module {
       spec.sheetRows = cellsV + 1;
     } else {
       spec.mesh = loadObjMesh(p_.resolvePath(meshFile));
+      sim.checkParticleBudget(double(spec.mesh.vertices.size()), "<Cloth> mesh " + meshFile, where);
       spec.mesh.triangleLines.clear();  // checked against the file already; later messages name the scene
       const float scale = p_.realf("scale");
       const Vec3 t = p_.vector("translate");
@@ -96,6 +98,7 @@ class ClothModule : public Module {
     }
     sim.cloth.add(spec, sim.particles);
     sim.raiseSupportRadius(spec.supportRadius);
+    sim.checkCellOccupancy();
   }
 
  private:

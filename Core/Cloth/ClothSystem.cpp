@@ -13,8 +13,8 @@ namespace soak {
 ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
-      dBendRest_(device), dMaterialCoord_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
+      dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dMaterialCoord_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -29,6 +29,10 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   obj.triangleCount = int(spec.mesh.triangles.size());
   obj.localTriangles = spec.mesh.triangles;
   obj.hasMaterialCoordinates = spec.mesh.uv.size() == spec.mesh.vertices.size();
+  obj.where = spec.where;
+  for (const auto& t : spec.mesh.triangles)
+    obj.restArea += 0.5 * double(length(cross(spec.mesh.vertices[t[1]] - spec.mesh.vertices[t[0]],
+                                              spec.mesh.vertices[t[2]] - spec.mesh.vertices[t[0]])));
   const bool jacobi = spec.model == ClothModel::Chebyshev;
 
   float thickness = spec.thickness;

@@ -144,6 +144,7 @@ struct ClothSpec {
   int attachCollider = -1;        // pinned vertices follow this collider (-1: fixed)
   float thickness = 0.f;          // contact distance, m (0: 0.75 x mean edge length)
   float tetherSlack = 0.f;        // tethers allow (1 + slack) x rest distance to the pins; < 0: no tethers
+  std::string where;              // the <Cloth> element's file:line, for messages
 };
 
 struct ClothObject {
@@ -154,6 +155,8 @@ struct ClothObject {
   int firstEdge = 0, edgeCount = 0;  // in creation order (host)
   std::vector<std::array<int, 3>> localTriangles;  // for output
   bool hasMaterialCoordinates = false;  // a sheet, or a mesh with vt for every vertex
+  double restArea = 0.0;             // m^2, sum of its triangles at rest
+  std::string where;                 // the <Cloth> element's file:line
 };
 
 class ClothSystem {

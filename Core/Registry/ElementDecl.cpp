@@ -41,8 +41,8 @@ std::string ParamDecl::rangeText() const {
   if (type != ParamType::Real && type != ParamType::Integer) return "";
   bool lo = std::isfinite(min) && min > -1e299, hi = std::isfinite(max) && max < 1e299;
   if (type == ParamType::Integer) {
-    lo = lo && min > -1e17;
-    hi = hi && max < 1e17;
+    lo = lo && min > -2147483648.0;  // the full 32-bit range is not worth printing
+    hi = hi && max < 2147483647.0;
   }
   if (!lo && !hi) return "any";
   std::string s = lo ? (minExclusive ? "(" : "[") + number(min) : "(-inf";

@@ -35,8 +35,8 @@ struct ElementDecl {
 
   ElementDecl& real(const std::string& n, const std::string& unit, const std::string& def, const std::string& desc,
                     double lo = -1e300, double hi = 1e300, bool loExclusive = false);
-  ElementDecl& integer(const std::string& n, const std::string& def, const std::string& desc, double lo = -1e18,
-                       double hi = 1e18);
+  ElementDecl& integer(const std::string& n, const std::string& def, const std::string& desc,
+                       double lo = -2147483648.0, double hi = 2147483647.0);
   ElementDecl& boolean(const std::string& n, const std::string& def, const std::string& desc);
   ElementDecl& vector(const std::string& n, const std::string& unit, const std::string& def, const std::string& desc);
   ElementDecl& text(const std::string& n, const std::string& def, const std::string& desc, bool required = false);

@@ -21,6 +21,12 @@ class StatsRow {
   std::vector<std::pair<std::string, double>> values_;
 };
 
+// Particles an emitter would add by a time (Simulation::checkPlannedParticles).
+struct PlannedParticles {
+  double count = 0.0;
+  std::string what, where;  // e.g. "<Nozzle>", its file:line
+};
+
 // What a scene element becomes. A module may change settings, create
 // particles and meshes, add stages to the step, and add stats columns.
 // Every hook is optional.
@@ -37,6 +43,9 @@ class Module {
   virtual void addStats(Simulation&, StatsRow&) {}
   // Called before every step (host side, e.g. to move a scripted collider).
   virtual void beforeStep(Simulation&) {}
+  // Emitters: how many particles they would add from now to `endTime` (s),
+  // so that a run that would outgrow its budget is refused before it starts.
+  virtual PlannedParticles plannedParticles(const Simulation&, double /*endTime*/) const { return {}; }
   // Checkpoints (soak run --checkpoint-every, --resume): state that changes
   // during the run and lives outside the particle arrays and their channels
   // (counters, particles queued for the next step). Read back in the order

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <set>
 #include <pugixml.hpp>
 #include <sstream>
 
 #include "Base/Error.h"
+#include "Base/ReadInput.h"
 #include "Scene/Suggest.h"
 #include "Scene/ValueParse.h"
 
@@ -14,12 +16,14 @@ namespace soak {
 
 namespace {
 
-// Maps pugixml's character offsets to 1-based line numbers.
+// Maps pugixml's character offsets to 1-based line numbers. A line ends at
+// "\n", "\r\n" or a lone "\r" (old Mac files), as XML 1.0 Section 2.11 reads them.
 class LineIndex {
  public:
   explicit LineIndex(const std::string& text) {
     for (std::size_t i = 0; i < text.size(); ++i)
-      if (text[i] == '\n') newlines_.push_back(static_cast<long>(i));
+      if (text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')))
+        newlines_.push_back(static_cast<long>(i));
   }
   int lineOf(std::ptrdiff_t offset) const {
     if (offset < 0) return 0;
@@ -64,7 +68,16 @@ Override parseOverride(const std::string& s) {
   return o;
 }
 
-void applyOverride(pugi::xml_node root, const Override& o, const ModuleRegistry& registry) {
+// Where a value given by --set is blamed: the option itself, not the line of
+// the element it lands on (or line 0 of an element it had to add).
+using OverrideOrigins = std::map<std::pair<const void*, std::string>, std::string>;
+std::string overrideBlame(const std::string& text) {
+  constexpr std::size_t kShown = 60;
+  return "--set '" + (text.size() <= kShown ? text : text.substr(0, kShown) + "...") + "'";
+}
+
+void applyOverride(pugi::xml_node root, const Override& o, const ModuleRegistry& registry,
+                   OverrideOrigins& origins) {
   const ElementDecl* decl = registry.find(o.element);
   if (!decl)
     throw InputError("--set '" + o.text + "': unknown element <" + o.element + ">" +
@@ -91,14 +104,20 @@ void applyOverride(pugi::xml_node root, const Override& o, const ModuleRegistry&
   pugi::xml_attribute a = target.attribute(o.attribute.c_str());
   if (!a) a = target.append_attribute(o.attribute.c_str());
   a.set_value(o.value.c_str());
+  origins[{target.internal_object(), o.attribute}] = overrideBlame(o.text);
+  // The element itself, when an override had to add it.
+  if (target.offset_debug() < 0) origins.emplace(std::make_pair(target.internal_object(), std::string()), overrideBlame(o.text));
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open scene file '" + path + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+// pugixml keeps a repeated attribute (and reads the first); XML 1.0
+// (Section 3.1, "Unique Att Spec") makes it malformed.
+void refuseRepeatedAttributes(pugi::xml_node n, const std::string& where) {
+  std::set<std::string> names;
+  for (pugi::xml_attribute a : n.attributes())
+    if (!names.insert(a.name()).second)
+      throw InputError("malformed XML: <" + std::string(n.name()) + "> has attribute '" + std::string(a.name()) +
+                           "' twice (XML allows each attribute once per element)",
+                       where);
 }
 
 std::vector<std::string> paramNames(const ElementDecl& d) {
@@ -111,7 +130,7 @@ std::vector<std::string> paramNames(const ElementDecl& d) {
 
 Scene Scene::load(const std::string& path, const std::vector<std::string>& overrides, ModuleRegistry& registry,
                   const PluginRequest& loadPlugin) {
-  return parse(readFile(path), path, overrides, registry, loadPlugin);
+  return parse(readInputFile(path, kMaxSceneBytes, "scene file"), path, overrides, registry, loadPlugin);
 }
 
 Scene Scene::parse(const std::string& text, const std::string& path, const std::vector<std::string>& overrides,
@@ -136,6 +155,7 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
   if (std::string(root.name()) != "Scene")
     throw InputError("root element is <" + std::string(root.name()) + ">, expected <Scene>",
                      where(lines.lineOf(root.offset_debug())));
+  refuseRepeatedAttributes(root, where(lines.lineOf(root.offset_debug())));
   for (pugi::xml_attribute a : root.attributes())
     if (std::string(a.name()) != "name" && std::string(a.name()) != "description")
       throw InputError("<Scene>: unknown attribute '" + std::string(a.name()) + "'" +
@@ -145,6 +165,7 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
   // Plugins first, so that their elements are known when the rest is checked.
   for (pugi::xml_node n : root.children("Plugin")) {
     std::string w = where(lines.lineOf(n.offset_debug()));
+    refuseRepeatedAttributes(n, w);
     std::string p = n.attribute("path").as_string(), name = n.attribute("name").as_string();
     for (pugi::xml_attribute a : n.attributes())
       if (std::string(a.name()) != "path" && std::string(a.name()) != "name")
@@ -161,12 +182,20 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
     }
   }
 
-  for (const std::string& s : overrides) applyOverride(root, parseOverride(s), registry);
+  OverrideOrigins origins;
+  for (const std::string& s : overrides) applyOverride(root, parseOverride(s), registry, origins);
 
   std::map<std::string, int> seen;
   for (pugi::xml_node n = root.first_child(); n; n = n.next_sibling()) {
     if (n.type() == pugi::node_comment) continue;
     const int line = lines.lineOf(n.offset_debug());
+    // Where this element's errors point: its line, or the --set that added it.
+    const auto addedBy = origins.find({n.internal_object(), std::string()});
+    const std::string elementWhere = addedBy != origins.end() ? addedBy->second : where(line);
+    auto attributeWhere = [&](const std::string& attribute) {
+      const auto it = origins.find({n.internal_object(), attribute});
+      return it != origins.end() ? it->second : elementWhere;
+    };
     if (n.type() != pugi::node_element) {
       std::string t = n.value();
       if (t.find_first_not_of(" \t\r\n") == std::string::npos) continue;
@@ -185,31 +214,34 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
     }
     if (decl->unique && seen[name]++ > 0)
       throw InputError("<" + name + "> may appear only once per scene", where(line));
+    // Child elements and text, CDATA sections included, are refused alike.
     for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
-      if (c.type() == pugi::node_element || (c.type() == pugi::node_pcdata &&
-                                             std::string(c.value()).find_first_not_of(" \t\r\n") != std::string::npos))
+      if (c.type() == pugi::node_element ||
+          ((c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) &&
+           std::string(c.value()).find_first_not_of(" \t\r\n") != std::string::npos))
         throw InputError("<" + name + "> takes attributes only, no child elements or text",
                          where(lines.lineOf(c.offset_debug())));
     SceneElement el;
     el.decl = decl;
     el.line = line;
-    el.params = ElementParams(decl, where(line));
+    el.params = ElementParams(decl, elementWhere);
+    refuseRepeatedAttributes(n, elementWhere);
     for (pugi::xml_attribute a : n.attributes()) {
       if (!decl->find(a.name()))
         throw InputError("<" + name + ">: unknown attribute '" + std::string(a.name()) + "'" +
                              suggestionText(a.name(), paramNames(*decl)),
-                         where(line));
+                         attributeWhere(a.name()));
     }
     for (const ParamDecl& p : decl->params) {
       pugi::xml_attribute a = n.attribute(p.name.c_str());
       if (!a && p.required)
         throw InputError("<" + name + ">: attribute '" + p.name + "' is required (" + p.description + ")",
-                         where(line));
+                         elementWhere);
       ParamValue v;
       std::string error;
       if (!parseParamValue(p, a ? a.value() : p.defaultValue, v, error)) {
         if (!a) throw std::logic_error("default of <" + name + "> " + p.name + " is invalid: " + error);
-        throw InputError("<" + name + ">: attribute '" + p.name + "': " + error, where(line));
+        throw InputError("<" + name + ">: attribute '" + p.name + "': " + error, attributeWhere(p.name));
       }
       if (p.type == ParamType::Text && p.textKind == TextKind::InputFile && !v.text.empty())
         scene.inputFiles_.push_back(el.params.resolvePath(v.text));

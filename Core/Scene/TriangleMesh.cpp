@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "Base/Error.h"
+#include "Base/ReadInput.h"
 
 namespace soak {
 
@@ -21,9 +21,8 @@ bool startsWith(const std::string& line, char c) {
 // file is refused with its line number: "nan" or "inf" coordinates (read as
 // 0) and faces of one or two vertices (dropped). Returns the line of every
 // face, in order, for messages about faces.
-std::vector<int> scanObjLines(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot open OBJ mesh", path);
+std::vector<int> scanObjLines(const std::string& text, const std::string& path) {
+  std::istringstream in(text);
   std::string line;
   std::vector<int> faceLines;
   for (int lineNo = 1; std::getline(in, line); ++lineNo) {
@@ -51,12 +50,15 @@ std::vector<int> scanObjLines(const std::string& path) {
 }  // namespace
 
 TriangleMesh loadObjMesh(const std::string& path) {
-  const std::vector<int> faceLines = scanObjLines(path);
+  const std::string text = readInputFile(path, kMaxMeshBytes, "OBJ mesh");
+  const std::vector<int> faceLines = scanObjLines(text, path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  // From the text already read: materials (mtllib) are not read, so an OBJ
+  // cannot send the reader to another file.
+  if (!reader.ParseFromString(text, std::string(), config)) {
     std::string why = reader.Error();
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
     throw InputError("cannot read OBJ mesh: " + (why.empty() ? std::string("unknown error") : why), path);

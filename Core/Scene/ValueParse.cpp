@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -55,6 +56,27 @@ bool inRange(const ParamDecl& d, double v) {
   if (d.minExclusive ? !(v > d.min) : !(v >= d.min)) return false;
   return v <= d.max;
 }
+// Reals reach the kernels as 32-bit floats: a value must be checked in that
+// type too (1e39 becomes inf, 1e-50 becomes 0).
+bool fitsFloat(const ParamDecl& d, const std::string& text, double v, std::string& error) {
+  const float f = static_cast<float>(v);
+  if (!std::isfinite(f)) {
+    error = "value " + clip(text) + " is beyond a 32-bit float (largest 3.4e38), the type it is stored in";
+    return false;
+  }
+  if (!inRange(d, double(f))) {
+    std::ostringstream s;
+    s << "value " << clip(text) << " becomes " << f << " as a 32-bit float, the type it is stored in, "
+      << "which is out of range; allowed: " << d.rangeText();
+    error = s.str();
+    return false;
+  }
+  return true;
+}
+// Integers are stored as 32-bit ints (counts, indices).
+bool fitsInt(long long v) {
+  return v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max();
+}
 }  // namespace
 
 bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out, std::string& error) {
@@ -71,14 +93,14 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
         error = "value " + clip(text) + " is out of range; allowed: " + d.rangeText();
         return false;
       }
-      return true;
+      return fitsFloat(d, text, out.real, error);
     }
     case ParamType::Integer: {
       if (!toInteger(text, out.integer)) {
         error = shown(raw) + " is not an integer";
         return false;
       }
-      if (!inRange(d, double(out.integer))) {
+      if (!inRange(d, double(out.integer)) || !fitsInt(out.integer)) {
         error = "value " + clip(text) + " is out of range; allowed: " + d.rangeText();
         return false;
       }
@@ -100,6 +122,11 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
         error = shown(raw) + " is not a vector of three finite numbers (e.g. \"0 -9.81 0\")";
         return false;
       }
+      for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(float(c[k]))) {
+          error = shown(raw) + ": component " + clip(parts[k]) + " is beyond a 32-bit float (largest 3.4e38)";
+          return false;
+        }
       out.vector = Vec3(float(c[0]), float(c[1]), float(c[2]));
       return true;
     }
@@ -123,8 +150,8 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
     case ParamType::IntegerList: {
       for (const std::string& p : splitList(text)) {
         long long v = 0;
-        if (!toInteger(p, v)) {
-          error = shown(p) + " in " + shown(raw) + " is not an integer";
+        if (!toInteger(p, v) || !fitsInt(v)) {
+          error = shown(p) + " in " + shown(raw) + " is not a 32-bit integer";
           return false;
         }
         out.list.push_back(v);

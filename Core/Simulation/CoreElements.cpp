@@ -1,5 +1,6 @@
 // The scene elements Core provides, each declared once.
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "Base/Error.h"
@@ -10,6 +11,12 @@
 namespace soak {
 
 namespace {
+
+std::string number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof(b), "%.6g", v);
+  return b;
+}
 
 class SimulationModule : public Module {
  public:
@@ -27,6 +34,24 @@ class SimulationModule : public Module {
     sim.settings.domainMax = p_.vector("domainMax");
     sim.couplingPasses = int(p_.integer("couplingPasses"));
     sim.contactPasses = int(p_.integer("contactPasses"));
+    sim.settings.limits.maxParticles = p_.integer("maxParticles");
+    sim.settings.limits.maxStepsPerFrame = p_.integer("maxStepsPerFrame");
+    sim.settings.limits.maxCellParticles = p_.integer("maxCellParticles");
+    sim.settings.where = p_.where();
+    const Vec3 lo = sim.settings.domainMin, hi = sim.settings.domainMax;
+    if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
+      throw InputError("<Simulation>: domainMax must exceed domainMin on every axis (water outside the domain is "
+                       "drained: an empty domain would drain all of it in the first step)",
+                       p_.where());
+    // A frame every 1/frameRate s, a step every timeStep s.
+    const double stepsPerFrame = std::ceil(1.0 / (sim.settings.frameRate * sim.settings.timeStep) - 1e-9);
+    if (!(stepsPerFrame <= double(sim.settings.limits.maxStepsPerFrame)))
+      throw InputError("<Simulation>: timeStep " + number(sim.settings.timeStep) + " s at frameRate " +
+                           number(sim.settings.frameRate) + " needs " + number(stepsPerFrame) +
+                           " steps per frame, more than maxStepsPerFrame = " +
+                           std::to_string(sim.settings.limits.maxStepsPerFrame) +
+                           "; raise timeStep or frameRate, or raise Simulation.maxStepsPerFrame",
+                       p_.where());
   }
 
  private:
@@ -48,6 +73,7 @@ class WaterModule : public Module {
     sim.water.viscosity = p_.realf("viscosity");
     sim.water.vorticity = p_.realf("vorticity");
     sim.water.neighbourSkin = p_.realf("neighbourSkin");
+    sim.water.where = p_.where();
   }
 
  private:
@@ -62,16 +88,16 @@ class WaterBlockModule : public Module {
     const float s = sim.water.spacing;
     if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
       throw InputError("<WaterBlock>: max must exceed min on every axis", p_.where());
-    const long long nx = std::llround(std::floor((hi.x - lo.x) / s + 1e-4)) + 0;
-    const long long ny = std::llround(std::floor((hi.y - lo.y) / s + 1e-4)) + 0;
-    const long long nz = std::llround(std::floor((hi.z - lo.z) / s + 1e-4)) + 0;
-    const long long total = std::max(nx, 1LL) * std::max(ny, 1LL) * std::max(nz, 1LL);
-    sim.checkParticleBudget(total, "<WaterBlock>", p_.where());
+    // Counted in double first: 2^22 particles a side is 2^66, past any 64-bit count.
+    auto along = [s](float extent) { return std::max(1.0, std::floor(double(extent / s) + 1e-4)); };
+    const double nxd = along(hi.x - lo.x), nyd = along(hi.y - lo.y), nzd = along(hi.z - lo.z);
+    sim.checkParticleBudget(nxd * nyd * nzd, "<WaterBlock>", p_.where());
+    const long long nx = (long long)nxd, ny = (long long)nyd, nz = (long long)nzd, total = nx * ny * nz;
     std::vector<ParticleInit> batch;
     batch.reserve(static_cast<std::size_t>(total));
-    for (long long k = 0; k < std::max(nz, 1LL); ++k)
-      for (long long j = 0; j < std::max(ny, 1LL); ++j)
-        for (long long i = 0; i < std::max(nx, 1LL); ++i) {
+    for (long long k = 0; k < nz; ++k)
+      for (long long j = 0; j < ny; ++j)
+        for (long long i = 0; i < nx; ++i) {
           ParticleInit q;
           q.position = Vec3(lo.x + (float(i) + 0.5f) * s, lo.y + (float(j) + 0.5f) * s, lo.z + (float(k) + 0.5f) * s);
           q.velocity = v;
@@ -186,6 +212,21 @@ class WaterSurfaceModule : public Module {
     sim.settings.surfaceCellSize = p_.realf("cellSize");
     sim.settings.surfaceIso = p_.realf("iso");
   }
+  // Each water particle adds its kernel to the grid points within its
+  // support radius: (2 h / cellSize + 1)^3 of them.
+  void setup(Simulation& sim) override {
+    const double across = 2.0 * double(sim.water.supportRadius) / double(sim.settings.surfaceCellSize) + 1.0;
+    if (across * across * across > double(kMaxSplatPoints))
+      throw InputError("<WaterSurface>: cellSize " + number(sim.settings.surfaceCellSize) +
+                           " m is too fine for the support radius " + number(sim.water.supportRadius) +
+                           " m: each particle would touch " + number(across * across * across) +
+                           " grid points, more than " + std::to_string(kMaxSplatPoints) +
+                           "; use a cellSize of at least " +
+                           number(2.0 * double(sim.water.supportRadius) / (std::cbrt(double(kMaxSplatPoints)) - 1.0)) +
+                           " m",
+                       p_.where());
+  }
+  static constexpr long long kMaxSplatPoints = 32768;
 
  private:
   ElementParams p_;
@@ -218,6 +259,16 @@ void registerCoreElements(ModuleRegistry& r) {
             .integer("contactPasses", "2", "Passes of cloth self and cloth-cloth contact per step.", 0, 100)
             .vector("domainMin", "m", "-1000 -1000 -1000", "Water below this corner is removed (drained).")
             .vector("domainMax", "m", "1000 1000 1000", "Water above this corner is removed (drained).")
+            .integer("maxParticles", "0",
+                     "Limit: most particles the run may hold, counting all its nozzles would emit up to its end "
+                     "(0: as many as the device's memory holds at about 512 bytes each).",
+                     0, 2000000000)
+            .integer("maxStepsPerFrame", "100000", "Limit: most time steps between two output frames.", 1,
+                     2000000000)
+            .integer("maxCellParticles", "4096",
+                     "Limit: most particles a neighbour-grid cell (edge: the largest support radius) may hold at "
+                     "rest spacing: (h / spacing)^3 for water, (h / edge length)^2 for a cloth sheet.",
+                     1, 2000000000)
             .makeUnique()
             .create([](const ElementParams& p) { return std::make_unique<SimulationModule>(p); }));
   r.add(ElementDecl("Water", "Properties of water particles (Table 1).", "Water")

@@ -1,7 +1,26 @@
 #pragma once
+#include <string>
+
 #include "Base/Vec3.h"
 
 namespace soak {
+
+// What one run may take (Doc/reliability.md, "Resource limits"): values in
+// range whose product is absurd (a time step of 1e-30 s, a support radius
+// of 10 m around particles 2 cm apart) are refused before anything runs,
+// with a message naming the limit. Raised with <Simulation> attributes.
+struct ResourceLimits {
+  // Most particles a run may hold, counting every particle its nozzles
+  // would emit up to the run's end as if none drained away. 0: as many as
+  // the device's memory holds at Simulation::kEstimatedBytesPerParticle.
+  long long maxParticles = 0;
+  // Most time steps between two output frames.
+  long long maxStepsPerFrame = 100000;
+  // Most particles one neighbour-grid cell (edge: the largest support
+  // radius) may hold at rest spacing: water (h / r0)^3, a cloth sheet
+  // (h / edge)^2. A neighbour query visits 27 cells.
+  long long maxCellParticles = 4096;
+};
 
 // Global settings from <Simulation>. Defaults are the paper's Table 1.
 struct SimulationSettings {
@@ -17,6 +36,8 @@ struct SimulationSettings {
   Vec3 domainMax{1e3f, 1e3f, 1e3f};
   float surfaceCellSize = 0.f;  // m; > 0: write a water surface mesh per frame (<WaterSurface>)
   float surfaceIso = 0.5f;      // relative density of that surface
+  ResourceLimits limits;
+  std::string where;            // <Simulation>'s file:line (empty when the scene has none)
 };
 
 // Water particle defaults from <Water> (Table 1).
@@ -32,6 +53,7 @@ struct WaterSettings {
   float viscosity = 0.01f;      // XSPH c
   float vorticity = 0.0f;       // vorticity confinement epsilon, m/s
   float neighbourSkin = 0.1f;   // fluid neighbour lists keep pairs within (1 + skin) h (FluidNeighbours.h)
+  std::string where;            // <Water>'s file:line (empty when the scene has none)
 };
 
 }  // namespace soak

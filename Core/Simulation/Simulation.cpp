@@ -24,8 +24,10 @@ void Simulation::addModule(std::unique_ptr<Module> module) { modules_.push_back(
 void Simulation::initialize() {
   for (auto& m : modules_) m->configure(*this);
   maxSupportRadius_ = std::max(maxSupportRadius_, water.supportRadius);
+  checkCellOccupancy();  // before the wall-density table, whose cost grows as (h / r0)^3
   fluid.configure(water);
   for (auto& m : modules_) m->setup(*this);
+  checkCellOccupancy();
   cloth.upload();
   cloth.updateSlots(particles.view());
   std::vector<Vec3> sinkCorners;

@@ -103,11 +103,20 @@ class Simulation {
     if (r > maxSupportRadius_) maxSupportRadius_ = r;
   }
   // Refuses (InputError at `where`) to add `added` particles when the run
-  // would need more memory than the device has, at about
-  // kEstimatedBytesPerParticle each (Doc/performance.md measures 316-913).
-  void checkParticleBudget(long long added, const std::string& what, const std::string& where) const;
+  // would hold more than particleBudget(). `added` is a double so that no
+  // count can overflow on its way here.
+  void checkParticleBudget(double added, const std::string& what, const std::string& where) const;
+  // Simulation.maxParticles, or as many as the device's memory holds at
+  // about kEstimatedBytesPerParticle each (Doc/performance.md measures
+  // 316-913), at most kMaxParticles.
+  double particleBudget() const;
+  // Refuses a run to `endTime` whose emitters (Module::plannedParticles)
+  // would take it past particleBudget(), before anything is written.
+  void checkPlannedParticles(double endTime) const;
+  // Refuses a grid cell that would hold more than
+  // settings.limits.maxCellParticles at rest spacing (ResourceLimits).
+  void checkCellOccupancy() const;
   static constexpr long long kEstimatedBytesPerParticle = 512;
-  // Indices are 32-bit: no run holds more particles than this.
   static constexpr long long kMaxParticles = 200000000LL;
 
   // Marks the collider list changed so it is uploaded before the next step.

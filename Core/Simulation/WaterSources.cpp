@@ -1,4 +1,5 @@
 // Where water comes from and goes: <Nozzle> (a jet) and <Sink> (a drain box).
+#include <algorithm>
 #include <cmath>
 
 #include "Base/Error.h"
@@ -26,6 +27,9 @@ class NozzleModule : public Module {
     const Vec3 helper = fabsf(dir_.y) < 0.9f ? Vec3(0.f, 1.f, 0.f) : Vec3(1.f, 0.f, 0.f);
     const Vec3 u = normalizedOrZero(cross(dir_, helper)), v = cross(dir_, u);
     const float s = sim.water.spacing, radius = p_.realf("radius");
+    // One disc must fit before it is built (a 100 m opening at 2 cm is 8e7 particles).
+    const double across = double(radius) / double(s);
+    sim.checkParticleBudget(3.14159265358979 * across * across + 4.0 * across + 1.0, "<Nozzle> (one disc of its jet)", where);
     const int reach = int(std::ceil(radius / s));
     for (int j = -reach; j <= reach; ++j)
       for (int i = -reach; i <= reach; ++i) {
@@ -70,6 +74,13 @@ class NozzleModule : public Module {
       writeWaterLayer(sim.device(), sim.particles.view(), first, discOnDevice_.data(), k, layer);
       sim.emittedWaterMass += double(k) * double(sim.water.particleMass);
     }
+  }
+  // A disc each time the water moves layerSpacing_, while the jet is on.
+  PlannedParticles plannedParticles(const Simulation& sim, double endTime) const override {
+    if (disc_.empty()) return {};
+    const double from = std::max(sim.time(), p_.real("start")), to = std::min(endTime, p_.real("stop"));
+    const double discs = to > from ? std::ceil((to - from) * double(speed_) / double(layerSpacing_)) + 1.0 : 0.0;
+    return {discs * double(disc_.size()), "<Nozzle>", p_.where()};
   }
   // How far the water has moved since the last layer: the phase of the jet.
   void saveState(StateWriter& out) const override { out.put<double>(travelled_); }

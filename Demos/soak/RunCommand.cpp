@@ -11,10 +11,12 @@
 #include <sstream>
 
 #include "Base/Error.h"
+#include "Base/ReadInput.h"
 #include "Checkpoint/Checkpoint.h"
 #include "Output/FrameWriter.h"
 #include "Output/OutputFolder.h"
 #include "Plugins/PluginLoader.h"
+#include "PrepareRun.h"
 #include "ProgressReport.h"
 #include "Scene/Scene.h"
 #include "Simulation/Instability.h"
@@ -40,13 +42,6 @@ std::string pvdList(const Simulation& sim, const std::string& out) {
   return list;
 }
 
-std::string sceneStem(const std::string& path) {
-  std::size_t slash = path.find_last_of('/');
-  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  std::size_t dot = name.find_last_of('.');
-  return dot == std::string::npos ? name : name.substr(0, dot);
-}
-
 void printProfile(const Simulation& sim) {
   double total = 0.0, wetting = 0.0;
   for (const StageTiming& t : sim.pipeline.timings()) {
@@ -62,70 +57,20 @@ void printProfile(const Simulation& sim) {
   std::printf("  %-22s %10.4f\n", "total", total);
 }
 
-std::string readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read the run's scene file", path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string absolutePath(const std::string& path) {
-  char* real = ::realpath(path.c_str(), nullptr);
-  if (!real) return path;  // loadScene reports a missing file with its own message
-  std::string result(real);
-  std::free(real);
-  return result;
-}
 }  // namespace
 
 int runCommand(const RunArguments& args) {
   if (args.threads > 0) omp_set_num_threads(args.threads);
   // Everything that can fail because of the input happens before the output
-  // folder is touched: parse, validate, build the simulation (and, when
-  // resuming, read and verify the checkpoint).
-  const Device device = resolveDevice(args.device);
-  SceneSource source{args.scene, "", args.overrides, args.plugins};
-  std::string out = args.output.empty() ? "soak-out/" + sceneStem(args.scene) : args.output;
-  std::optional<Checkpoint> checkpoint;
-  if (!args.resume.empty()) {
-    out = args.resume;
-    checkpoint = Checkpoint::read(out + "/" + kCheckpointFile);
-    const CheckpointHeader& h = checkpoint->header();
-    if (readWholeFile(out + "/scene.xml") != h.sceneText)
-      throw InputError("scene.xml differs from the scene the checkpoint was written for; a resumed run continues "
-                       "the same scene (start a new run to change it)",
-                       out + "/scene.xml");
-    source = {h.scenePath, h.sceneText, {}, args.plugins};
-  }
-  std::unique_ptr<LoadedScene> loaded = loadScene(source, device);
-  Simulation& sim = *loaded->sim;
-  const Scene& scene = loaded->scene;
-
-  RunOptions options;
-  options.frames = args.frames;
-  options.time = args.time;
-  options.profile = args.profile;
-  options.checkpointEvery = args.checkpointEvery;
-  options.checkpointPath = out + "/" + kCheckpointFile;
-  options.checkpointHeader.scenePath = checkpoint ? checkpoint->header().scenePath : absolutePath(args.scene);
-  options.checkpointHeader.sceneText = checkpoint ? checkpoint->header().sceneText : scene.textAsRun();
-  options.checkpointHeader.device = deviceName(device);
-  if (checkpoint) {
-    const CheckpointHeader& h = checkpoint->header();
-    options.startFrame = h.frame;
-    if (options.frames < 0 && options.time < 0) options.frames = h.plannedFrames;
-    if (options.checkpointEvery == 0) options.checkpointEvery = h.checkpointEvery;
-  }
-  options.checkpointHeader.checkpointEvery = options.checkpointEvery;
-  std::vector<std::string> clothNames;
-  for (const ClothObject& c : sim.cloth.objects()) clothNames.push_back(c.name);
-  checkOutputFolder(out, scene.inputFiles(), clothNames);
-  const int planned = Runner(sim, nullptr).plannedFrames(options);
-  if (checkpoint && planned <= options.startFrame)
-    throw InputError("the run already reached frame " + std::to_string(options.startFrame) +
-                     "; give --frames N (N > " + std::to_string(options.startFrame) + ") or --time to extend it",
-                     out + "/" + kCheckpointFile);
+  // folder is touched (PrepareRun.h).
+  PreparedRun run = prepareRun(args);
+  const Device device = run.device;
+  const std::string& out = run.out;
+  std::optional<Checkpoint>& checkpoint = run.checkpoint;
+  Simulation& sim = *run.loaded->sim;
+  const Scene& scene = run.loaded->scene;
+  RunOptions& options = run.options;
+  const int planned = run.plannedFrames;
 
   FrameWriter writer(out, scene.textAsRun(), checkpoint ? FrameWriter::Start::Resume : FrameWriter::Start::Fresh);
   Runner writingRunner(sim, &writer);

@@ -28,6 +28,35 @@ inline SoakResult runSoak(const std::string& args) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
+// The same under a time limit (SIGKILL after `seconds`) and a memory limit
+// (`megabytes` of address space; under AddressSanitizer, whose shadow
+// memory needs terabytes of address space, of resident memory instead), so
+// that a hang or a memory bomb fails the test instead of the machine. Exit
+// code 137 (-1 here) means a limit was hit.
+inline SoakResult runSoakLimited(const std::string& args, int seconds, int megabytes) {
+#if defined(__SANITIZE_ADDRESS__)
+  const bool asan = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  const bool asan = true;
+#else
+  const bool asan = false;
+#endif
+#else
+  const bool asan = false;
+#endif
+  const std::string limit = asan ? "ASAN_OPTIONS=\"$ASAN_OPTIONS:hard_rss_limit_mb=" + std::to_string(megabytes) + "\" "
+                                 : "ulimit -v " + std::to_string(megabytes * 1024) + "; ";
+  const std::string cmd = asan ? limit + "timeout -s KILL " + std::to_string(seconds) + " " + SOAK_BINARY + " " + args
+                               : limit + "exec timeout -s KILL " + std::to_string(seconds) + " " + SOAK_BINARY + " " + args;
+  FILE* p = popen(("(" + cmd + ") 2>&1").c_str(), "r");
+  std::string out;
+  char buf[512];
+  while (p && fgets(buf, sizeof(buf), p)) out += buf;
+  const int status = p ? pclose(p) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
 // A fresh (removed) path under the test temp folder.
 inline std::string freshTempPath(const std::string& name) {
   const std::string d = ::testing::TempDir() + "soak_" + name;
