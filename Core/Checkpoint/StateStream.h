@@ -72,6 +72,7 @@ class StateReader {
   }
   bool atEnd() const { return pos_ == size_; }
   std::size_t offset() const { return pos_; }  // bytes read so far
+  std::size_t remaining() const { return size_ - pos_; }
   [[noreturn]] void fail(const std::string& why) const {
     throw InputError("checkpoint is not readable: " + why, what_);
   }

@@ -36,6 +36,12 @@ void ParticleState::loadState(StateReader& in) {
   in.expect("particles");
   const int count = in.get<std::int32_t>();
   if (count < 0) in.fail("negative particle count");
+  // Each particle's arrays take this many bytes of the file: a count the
+  // bytes left cannot hold is refused before anything is allocated for it.
+  const std::size_t bytesPerParticle = 2 * sizeof(Float4) + sizeof(Vec3) + 2 * sizeof(float) + 2 * sizeof(int) +
+                                       channels_.size() * sizeof(float);
+  if (std::size_t(count) > in.remaining() / bytesPerParticle)
+    in.fail(std::to_string(count) + " particles announced, more than the data left can hold");
   reserve(count);
   restore(in, position_, count, "position");
   restore(in, predicted_, count, "predicted");

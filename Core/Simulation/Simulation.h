@@ -116,6 +116,14 @@ class Simulation {
   // Refuses a grid cell that would hold more than
   // settings.limits.maxCellParticles at rest spacing (ResourceLimits).
   void checkCellOccupancy() const;
+  // Most pairs neighbour lists keyed by `keys` particles can need: the
+  // candidates of 27 cells at maxCellParticles each, with a factor 16 for
+  // water packed above its rest density and the lists' headroom. A
+  // checkpoint's list sizing beyond it is refused (a forged size would
+  // otherwise allocate at will).
+  double maxListCapacity(int keys) const {
+    return double(keys + 1) * 27.0 * 16.0 * double(settings.limits.maxCellParticles);
+  }
   static constexpr long long kEstimatedBytesPerParticle = 512;
   static constexpr long long kMaxParticles = 200000000LL;
 

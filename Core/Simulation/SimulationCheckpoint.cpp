@@ -1,4 +1,5 @@
 // Simulation's part of a checkpoint (Checkpoint/Checkpoint.h writes the file).
+#include <cmath>
 #include <typeinfo>
 
 #include "Checkpoint/StateStream.h"
@@ -6,6 +7,44 @@
 #include "Simulation/Simulation.h"
 
 namespace soak {
+
+namespace {
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// What the step takes for granted about the particles, checked on what a
+// checkpoint loaded (a forged or damaged file must be refused, not indexed
+// with): every phase is water, static, removed or one of the scene's cloths;
+// each cloth vertex is there exactly once, with its cloth's phase; positions
+// and velocities are finite; radii are within the grid's cell.
+void checkLoadedParticles(const ParticleState& ps, const ClothSystem& cloth, float maxRadius, StateReader& in) {
+  const std::vector<int> phase = ps.downloadPhases(), id = ps.downloadIds();
+  const std::vector<Float4> x = ps.downloadPositions(), xs = ps.downloadPredicted();
+  const std::vector<Vec3> v = ps.downloadVelocities();
+  const std::vector<float> mass = ps.downloadMasses(), radius = ps.downloadRadii();
+  const int clothCount = int(cloth.objects().size());
+  std::vector<char> seen(std::size_t(cloth.vertexCount()), 0);
+  for (std::size_t i = 0; i < phase.size(); ++i) {
+    const std::string which = "particle " + std::to_string(i);
+    if (!(phase[i] == kPhaseWater || phase[i] == kPhaseStatic || isRemoved(phase[i]) ||
+          (isCloth(phase[i]) && phase[i] <= clothCount)))
+      in.fail(which + " has phase " + std::to_string(phase[i]) + ", which the scene does not make");
+    if (isCloth(phase[i])) {
+      const ClothObject& c = cloth.objects()[std::size_t(phase[i] - 1)];
+      if (id[i] < c.firstVertex || id[i] >= c.firstVertex + c.vertexCount || seen[std::size_t(id[i])]++)
+        in.fail(which + " claims cloth vertex " + std::to_string(id[i]) + " of '" + c.name +
+                "', which is not its or is claimed twice");
+    }
+    if (!finite(x[i].xyz()) || !finite(xs[i].xyz()) || !finite(v[i]) || !std::isfinite(x[i].w) ||
+        !std::isfinite(mass[i]) || mass[i] < 0.f)
+      in.fail(which + " has a non-finite position, velocity or mass");
+    if (!(radius[i] > 0.f && radius[i] <= maxRadius))
+      in.fail(which + " has support radius " + std::to_string(radius[i]) + ", outside (0, " +
+              std::to_string(maxRadius) + "]");
+  }
+  for (std::size_t k = 0; k < seen.size(); ++k)
+    if (!seen[k]) in.fail("cloth vertex " + std::to_string(k) + " has no particle");
+}
+}  // namespace
 
 void Simulation::saveState(StateWriter& out) const {
   out.putString("simulation");
@@ -35,7 +74,9 @@ void Simulation::loadState(StateReader& in) {
     in.fail("it was written for " + std::to_string(clothVertices) + " cloth vertices, the scene makes " +
             std::to_string(cloth.vertexCount()) + " (did a mesh change?)");
   particles.loadState(in);
-  const FluidListSizing lists = getListSizing(in, "neighbour list");
+  checkLoadedParticles(particles, cloth, maxSupportRadius_, in);
+  if (nextId < 0) in.fail("negative next water id");
+  const FluidListSizing lists = getListSizing(in, "neighbour list", maxListCapacity(particles.count()));
   const int moduleCount = in.get<std::int32_t>();
   if (moduleCount != int(modules_.size()))
     in.fail("it was written for " + std::to_string(moduleCount) + " scene elements, the scene has " +

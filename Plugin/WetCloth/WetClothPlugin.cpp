@@ -56,6 +56,7 @@ class WetClothModule : public Module {
     dripCounters_.upload({DripCounters{}});
     clothNeighbours_ = std::make_unique<ClothNeighbours>(sim.device());
     dripRoomCap_ = std::max(kMinDripRoom, sim.cloth.vertexCount() / 32);
+    maxListCapacity_ = sim.maxListCapacity(sim.cloth.vertexCount());
     dryMass_.upload(dry);
     kappa_.upload(std::vector<float>(std::size_t(vertices), 1.f));
     sim.couplingStiffness = kappa_.data();
@@ -120,8 +121,9 @@ class WetClothModule : public Module {
     c.spawned = in.get<std::int64_t>();
     c.deferred = in.get<std::int64_t>();
     initialised_ = in.get<std::int32_t>() != 0;
-    if (c.pending > takenRoom_ || dripRoom_ < 1) in.fail("drip bookkeeping out of range");
-    clothNeighbours_->setSizing(getListSizing(in, "cloth neighbour list"));
+    if (c.pending > takenRoom_ || takenRoom_ > dripRoomCap_ || dripRoom_ < 1 || dripRoom_ > dripRoomCap_)
+      in.fail("drip bookkeeping out of range");
+    clothNeighbours_->setSizing(getListSizing(in, "cloth neighbour list", maxListCapacity_));
     dripSources_.upload(pending);
     dripCounters_.upload({c});
   }
@@ -270,6 +272,7 @@ class WetClothModule : public Module {
   Buffer<DripCounters> dripCounters_;
   int dripRoom_ = kMinDripRoom;  // drips one step may take
   int dripRoomCap_ = kMinDripRoom;
+  double maxListCapacity_ = 0.0;  // a checkpoint's cloth list sizing beyond it is refused
   int takenRoom_ = 0;  // the room the last step took drips with: slots to append next step
   std::unique_ptr<ClothNeighbours> clothNeighbours_;  // on the simulation's device (setup)
   bool initialised_ = false;

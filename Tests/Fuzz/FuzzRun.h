@@ -13,7 +13,7 @@
 namespace soak::fuzz {
 
 inline const char* kSampleScene = R"(<Scene>
-  <Simulation duration="0.1" maxParticles="20000"/>
+  <Simulation duration="0.1" maxParticles="20000" maxCellParticles="64"/>
   <WaterBlock min="-0.05 0.1 -0.05" max="0.05 0.16 0.05"/>
   <Nozzle position="0 0.3 0" radius="0.02" speed="2"/>
   <Cloth cellsU="6" cellsV="6" width="0.3" height="0.3" origin="-0.15 0 -0.15" axisU="1 0 0" axisV="0 0 1"

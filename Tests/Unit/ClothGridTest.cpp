@@ -251,7 +251,7 @@ TEST(ClothNeighbours, CheckpointsKeepTheRoomsAndRefuseRoomsOutOfRange) {
     StateWriter out;
     putListSizing(out, in);
     StateReader reader(out.bytes().data(), out.bytes().size(), "test");
-    return getListSizing(reader, "cloth neighbour list");
+    return getListSizing(reader, "cloth neighbour list", 1000.0);
   };
   const PairListSizing back = roundTrip(s);
   EXPECT_EQ(back.capacity, 40);
@@ -267,4 +267,8 @@ TEST(ClothNeighbours, CheckpointsKeepTheRoomsAndRefuseRoomsOutOfRange) {
   PairListSizing unkeyed = s;
   unkeyed.roomStart.clear();
   EXPECT_TRUE(roundTrip(unkeyed).roomStart.empty());
+  // A capacity past what the lists can need (a forged file) is refused.
+  PairListSizing huge = unkeyed;
+  huge.capacity = 2000000000;
+  EXPECT_THROW(roundTrip(huge), std::exception);
 }

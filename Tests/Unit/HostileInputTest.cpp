@@ -1,6 +1,8 @@
 // Hostile but realistic input through the soak program: a refused resume
 // leaves the run as it was, names cannot become paths, the output folder
-// cannot replace the input, and option values are range-checked.
+// cannot replace the input, option values are range-checked, and files that
+// are not files are not read. (The rest of the hostile classes are cases of
+// the bad-input corpus, Tests/BadInput/cases.txt.)
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -179,4 +181,34 @@ TEST(HostileInput, OptionValuesAreRangeChecked) {
     EXPECT_FALSE(pathExists(out)) << c.first << ": output written";
   }
   EXPECT_EQ(runSoak("run --resume '' --device cpu").code, 2);
+}
+
+// A checkpoint that is a folder, or a link to an endless device, is refused
+// as bad input (exit 2, naming it) before a byte is read, and the run it
+// belongs to is left as it was.
+TEST(HostileInput, ACheckpointThatIsNotAFileIsRefused) {
+  const std::string in = meshSceneFolder("hostile_checkpoint_kind");
+  const std::string run = in + "/out";
+  ASSERT_EQ(runSoak("run " + in + "/scene.xml -o " + run + " --frames 1 --device cpu --quiet").code, 0);
+  const std::string stats = readWholeFile(run + "/stats.csv");
+  std::system(("mkdir -p '" + run + "/checkpoint.soak'").c_str());
+  SoakResult r = runSoakLimited("run --resume " + run + " --frames 2 --device cpu --quiet", 60, 4096);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("checkpoint.soak: checkpoint is a folder"), std::string::npos) << r.output;
+  std::system(("rmdir '" + run + "/checkpoint.soak' && ln -s /dev/zero '" + run + "/checkpoint.soak'").c_str());
+  r = runSoakLimited("run --resume " + run + " --frames 2 --device cpu --quiet", 60, 4096);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("checkpoint is not a regular file"), std::string::npos) << r.output;
+  EXPECT_EQ(readWholeFile(run + "/stats.csv"), stats);
+}
+
+// An OBJ's mtllib naming an endless device is not followed: materials are
+// not read, so the mesh loads from its own text.
+TEST(HostileInput, AnObjMaterialLibraryIsNotRead) {
+  const std::string in = meshSceneFolder("hostile_mtllib");
+  writeWholeFile(in + "/square.obj", "mtllib /dev/zero\nusemtl x\n" + squareObj(1.f));
+  const SoakResult r =
+      runSoakLimited("run " + in + "/scene.xml -o " + in + "/out --frames 1 --device cpu --quiet", 60, 4096);
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(pathExists(in + "/out/cloth_square.pvd"));
 }
