@@ -2,6 +2,9 @@
 
 #include <vtkPolyData.h>
 
+#include <algorithm>
+#include <chrono>
+
 #include "Output/WaterSurface.h"
 
 #include <sys/stat.h>
@@ -32,13 +35,23 @@ void makeDirectories(const std::string& path) {
     throw InputError("output folder '" + path + "' is not writable: " + std::strerror(errno));
 }
 
-FrameWriter::FrameWriter(const std::string& directory, const std::string& sceneText, Start start)
-    : dir_(directory), water_(directory + "/water.pvd") {
+FrameWriter::FrameWriter(const std::string& directory, const std::string& sceneText, Start start,
+                         OutputSettings settings)
+    : dir_(directory), settings_(settings), water_(directory + "/water.pvd") {
   if (start == Start::Resume) return;
   makeDirectories(dir_ + "/water");
   writeFileAtomically(dir_ + "/scene.xml", sceneText);
   stats_.open(dir_ + "/stats.csv", std::ios::out | std::ios::trunc);
   if (!stats_) throw InputError("cannot write '" + dir_ + "/stats.csv'");
+}
+
+FrameWriter::~FrameWriter() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  for (std::thread& t : threads_) t.join();  // each drains the queue before it ends
 }
 
 namespace {
@@ -49,96 +62,190 @@ std::string frameName(const std::string& prefix, int frame, const char* ext) {
 }
 }  // namespace
 
-void FrameWriter::writeWaterSurface(Simulation& sim, int frame, const std::vector<Vec3>& points,
-                                    const std::vector<float>& mass, const std::vector<float>& radius) {
-  if (!surface_) {
+// The cloth meshes' triangles, the channel names and the surface settings
+// do not change during a run: taken once, with the folders they need.
+void FrameWriter::captureLayout(Simulation& sim) {
+  const ParticleState& ps = sim.particles;
+  for (int c = 0; c < ps.channelCount(); ++c) channelNames_.push_back(ps.channelName(c));
+  const auto& objects = sim.cloth.objects();
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    const ClothObject& obj = objects[k];
+    ClothLayout l;
+    l.collection = "cloth_" + obj.name;
+    l.phase = obj.phase;
+    l.firstVertex = obj.firstVertex;
+    l.vertexCount = obj.vertexCount;
+    l.triangles = obj.localTriangles;
+    if (cloth_.size() <= k) {
+      makeDirectories(dir_ + "/" + l.collection);
+      cloth_.push_back(std::make_unique<PvdCollection>(dir_ + "/" + l.collection + ".pvd"));
+    }
+    clothLayout_.push_back(std::move(l));
+  }
+  surfaceOn_ = sim.settings.surfaceCellSize > 0.f;
+  surfaceCellSize_ = sim.settings.surfaceCellSize;
+  surfaceIso_ = sim.settings.surfaceIso;
+  restDensity_ = sim.water.restDensity;
+  if (surfaceOn_ && !surface_) {
     makeDirectories(dir_ + "/water_surface");
     surface_ = std::make_unique<PvdCollection>(dir_ + "/water_surface.pvd");
   }
-  WaterSurfaceSettings s;
-  s.cellSize = sim.settings.surfaceCellSize;
-  s.iso = sim.settings.surfaceIso;
-  vtkSmartPointer<vtkPolyData> surface = buildWaterSurface(points, mass, radius, sim.water.restDensity, s);
-  const std::string file = frameName("water_surface", frame, "vtp");
-  writePolyDataVtp(dir_ + "/water_surface/" + file, surface);
-  surface_->add(sim.time(), "water_surface/" + file);
+  haveLayout_ = true;
 }
 
 void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
-  ParticleState& ps = sim.particles;
-  std::vector<Float4> pos = ps.downloadPositions();
-  std::vector<Vec3> vel = ps.downloadVelocities();
-  std::vector<float> mass = ps.downloadMasses(), radius = ps.downloadRadii();
-  std::vector<int> phase = ps.downloadPhases(), id = ps.downloadIds();
-
-  // Water: sorted by id so frames list particles in a stable order.
-  std::vector<std::size_t> water;
-  for (std::size_t i = 0; i < phase.size(); ++i)
-    if (isWater(phase[i])) water.push_back(i);
-  std::sort(water.begin(), water.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
-  std::vector<Vec3> points(water.size());
-  const std::vector<float> density = sim.fluid.downloadDensity(int(phase.size()));
-  PointArray v{"velocity", 3, {}}, m{"mass", 1, {}}, r{"radius", 1, {}}, ids{"id", 1, {}}, rho{"density", 1, {}};
-  for (std::size_t k = 0; k < water.size(); ++k) {
-    std::size_t i = water[k];
-    points[k] = pos[i].xyz();
-    v.values.insert(v.values.end(), {vel[i].x, vel[i].y, vel[i].z});
-    m.values.push_back(mass[i]);
-    r.values.push_back(radius[i]);
-    ids.values.push_back(static_cast<float>(id[i]));
-    rho.values.push_back(density[i]);
-  }
-  const std::string file = frameName("water", frame, "vtu");
-  writeParticlesVtu(dir_ + "/water/" + file, points, {v, m, r, ids, rho});
-  water_.add(sim.time(), "water/" + file);
-  if (sim.settings.surfaceCellSize > 0.f) writeWaterSurface(sim, frame, points, m.values, r.values);
-  writeCloth(sim, frame);
-
-  StatsRow row;
-  row.add("frame", frame);
-  row.add("time", sim.time());
-  row.add("step", double(sim.stepIndex()));
+  if (!haveLayout_) captureLayout(sim);
+  // On the stepping thread: copies of the arrays and the stats row only.
+  auto c = std::make_unique<Capture>();
+  const ParticleState& ps = sim.particles;
+  c->frame = frame;
+  c->time = sim.time();
+  c->position = ps.downloadPositions();
+  c->velocity = ps.downloadVelocities();
+  c->mass = ps.downloadMasses();
+  c->radius = ps.downloadRadii();
+  c->phase = ps.downloadPhases();
+  c->id = ps.downloadIds();
+  c->density = sim.fluid.downloadDensity(int(c->phase.size()));
+  if (!clothLayout_.empty())
+    for (int k = 0; k < ps.channelCount(); ++k) c->channels.push_back(ps.downloadChannel(k));
+  c->stats.add("frame", frame);
+  c->stats.add("time", sim.time());
+  c->stats.add("step", double(sim.stepIndex()));
   const StatsRow simStats = sim.collectStats();
-  for (const auto& c : simStats.values()) row.add(c.first, c.second);
-  row.add("step_ms", stepMs);
-  writeStatsRow(row);
-  ++frames_;
+  for (const auto& col : simStats.values()) c->stats.add(col.first, col.second);
+  c->stats.add("step_ms", stepMs);
+
+  if (settings_.writerThreads == 0) {  // written here, on the stepping thread
+    commit(*c, writeFiles(*c));
+    return;
+  }
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (error_) std::rethrow_exception(error_);
+    if (captured_ - committed_ >= settings_.queuedFrames) {
+      waitedForDisk_ = true;
+      changed_.wait(lock, [&] { return captured_ - committed_ < settings_.queuedFrames || error_; });
+      if (error_) std::rethrow_exception(error_);
+    }
+    c->sequence = captured_++;
+    queue_.push_back(std::move(c));
+    while (int(threads_.size()) < settings_.writerThreads) threads_.emplace_back([this] { writerLoop(); });
+  }
+  changed_.notify_all();
 }
 
-void FrameWriter::writeCloth(Simulation& sim, int frame) {
-  const auto& objects = sim.cloth.objects();
-  if (objects.empty()) return;
-  ParticleState& ps = sim.particles;
-  std::vector<Float4> pos = ps.downloadPositions();
-  std::vector<Vec3> vel = ps.downloadVelocities();
-  std::vector<int> phase = ps.downloadPhases(), id = ps.downloadIds();
-  std::vector<std::vector<float>> channels;
-  for (int c = 0; c < ps.channelCount(); ++c) channels.push_back(ps.downloadChannel(c));
-  for (std::size_t k = 0; k < objects.size(); ++k) {
-    const ClothObject& obj = objects[k];
-    const std::string name = "cloth_" + obj.name;
-    if (cloth_.size() <= k) {
-      makeDirectories(dir_ + "/" + name);
-      cloth_.push_back(std::make_unique<PvdCollection>(dir_ + "/" + name + ".pvd"));
+void FrameWriter::flush() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return committed_ == captured_; });
+  if (error_) std::rethrow_exception(error_);
+}
+
+// Each thread takes the oldest queued frame, writes its files, then waits
+// for its turn to commit (frames are listed in the order they were taken).
+// After an error, frames are still taken in turn but neither written nor
+// listed, so flush() returns and reports the error.
+void FrameWriter::writerLoop() {
+  for (;;) {
+    std::unique_ptr<Capture> c;
+    bool failed = false;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+      if (queue_.empty()) return;
+      c = std::move(queue_.front());
+      queue_.pop_front();
+      failed = bool(error_);
     }
-    std::vector<Vec3> points(obj.vertexCount);
-    PointArray v{"velocity", 3, std::vector<float>(3 * obj.vertexCount)};
-    std::vector<PointArray> data{v};
-    for (int c = 0; c < ps.channelCount(); ++c)
-      data.push_back({ps.channelName(c), 1, std::vector<float>(obj.vertexCount)});
-    for (std::size_t i = 0; i < phase.size(); ++i) {
-      if (phase[i] != obj.phase) continue;
-      const int local = id[i] - obj.firstVertex;
-      points[local] = pos[i].xyz();
-      data[0].values[3 * local] = vel[i].x;
-      data[0].values[3 * local + 1] = vel[i].y;
-      data[0].values[3 * local + 2] = vel[i].z;
-      for (int c = 0; c < ps.channelCount(); ++c) data[c + 1].values[local] = channels[c][i];
+    Written files;
+    if (!failed) {
+      try {
+        files = writeFiles(*c);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!error_) error_ = std::current_exception();
+        failed = true;
+      }
     }
-    const std::string file = frameName(name, frame, "vtp");
-    writeMeshVtp(dir_ + "/" + name + "/" + file, points, obj.localTriangles, data);
-    cloth_[k]->add(sim.time(), name + "/" + file);
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] { return committed_ == c->sequence; });
+      failed = failed || bool(error_);
+    }
+    // Only this thread's frame is next: the commit needs no lock.
+    if (!failed) {
+      try {
+        commit(*c, files);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!error_) error_ = std::current_exception();
+      }
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++committed_;
+    }
+    changed_.notify_all();
   }
+}
+
+// The frame's files, each written under a temporary name and renamed.
+FrameWriter::Written FrameWriter::writeFiles(const Capture& c) const {
+  Written w;
+  if (testDelaySeconds_ > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(testDelaySeconds_));
+  // Water: sorted by id so frames list particles in a stable order.
+  std::vector<std::size_t> water;
+  for (std::size_t i = 0; i < c.phase.size(); ++i)
+    if (isWater(c.phase[i])) water.push_back(i);
+  std::sort(water.begin(), water.end(), [&](std::size_t a, std::size_t b) { return c.id[a] < c.id[b]; });
+  std::vector<Vec3> points(water.size());
+  PointArray v{"velocity", 3, {}}, m{"mass", 1, {}}, r{"radius", 1, {}}, ids{"id", 1, {}}, rho{"density", 1, {}};
+  for (std::size_t k = 0; k < water.size(); ++k) {
+    const std::size_t i = water[k];
+    points[k] = c.position[i].xyz();
+    v.values.insert(v.values.end(), {c.velocity[i].x, c.velocity[i].y, c.velocity[i].z});
+    m.values.push_back(c.mass[i]);
+    r.values.push_back(c.radius[i]);
+    ids.values.push_back(static_cast<float>(c.id[i]));
+    rho.values.push_back(c.density[i]);
+  }
+  w.water = "water/" + frameName("water", c.frame, "vtu");
+  writeParticlesVtu(dir_ + "/" + w.water, points, {v, m, r, ids, rho}, settings_.compression);
+  if (surfaceOn_) {
+    WaterSurfaceSettings settings;
+    settings.cellSize = surfaceCellSize_;
+    settings.iso = surfaceIso_;
+    vtkSmartPointer<vtkPolyData> surface = buildWaterSurface(points, m.values, r.values, restDensity_, settings);
+    w.surface = "water_surface/" + frameName("water_surface", c.frame, "vtp");
+    writePolyDataVtp(dir_ + "/" + w.surface, surface, settings_.compression);
+  }
+  for (const ClothLayout& obj : clothLayout_) {
+    std::vector<Vec3> clothPoints(std::size_t(obj.vertexCount));
+    std::vector<PointArray> data{{"velocity", 3, std::vector<float>(3 * std::size_t(obj.vertexCount))}};
+    for (const std::string& name : channelNames_)
+      data.push_back({name, 1, std::vector<float>(std::size_t(obj.vertexCount))});
+    for (std::size_t i = 0; i < c.phase.size(); ++i) {
+      if (c.phase[i] != obj.phase) continue;
+      const std::size_t local = std::size_t(c.id[i] - obj.firstVertex);
+      clothPoints[local] = c.position[i].xyz();
+      data[0].values[3 * local] = c.velocity[i].x;
+      data[0].values[3 * local + 1] = c.velocity[i].y;
+      data[0].values[3 * local + 2] = c.velocity[i].z;
+      for (std::size_t k = 0; k < channelNames_.size(); ++k) data[k + 1].values[local] = c.channels[k][i];
+    }
+    w.cloth.push_back(obj.collection + "/" + frameName(obj.collection, c.frame, "vtp"));
+    writeMeshVtp(dir_ + "/" + w.cloth.back(), clothPoints, obj.triangles, data, settings_.compression);
+  }
+  return w;
+}
+
+// Lists the frame, once all its files are on disk.
+void FrameWriter::commit(const Capture& c, const Written& files) {
+  water_.add(c.time, files.water);
+  if (surfaceOn_) surface_->add(c.time, files.surface);
+  for (std::size_t k = 0; k < files.cloth.size(); ++k) cloth_[k]->add(c.time, files.cloth[k]);
+  writeStatsRow(c.stats);
+  ++frames_;
 }
 
 void FrameWriter::writeStatsRow(const StatsRow& row) {

@@ -1,12 +1,21 @@
 #pragma once
+#include <array>
+#include <atomic>
+#include <condition_variable>
 #include <cstdint>
+#include <deque>
+#include <exception>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "Base/Vec3.h"
+#include "Output/OutputSettings.h"
 #include "Output/PvdCollection.h"
+#include "Output/VtkFiles.h"
 #include "Registry/Module.h"
 
 namespace soak {
@@ -21,16 +30,39 @@ class StateReader;
 //   OUT/water_surface.pvd + OUT/water_surface/*.vtp  with <WaterSurface>
 //   OUT/stats.csv                                 one row per frame
 //   OUT/scene.xml                                 the scene as run
+//
+// Off the stepping thread: writeFrame() only copies the frame's particle
+// arrays and its stats row from the simulation and queues them; background
+// writer threads build and compress the files, and commit the frames in
+// order (each .pvd and stats.csv gain a frame only once all its files are
+// on disk). A step waits only when OutputSettings::queuedFrames frames are
+// queued (the disk cannot keep up), which waitedForDisk() then reports.
 class FrameWriter {
  public:
   // Fresh: creates the folder (InputError if it cannot be written), writes
   // scene.xml and starts stats.csv. Resume: the folder of an earlier run;
   // nothing is touched until resume() applies a checked ResumeState.
   enum class Start { Fresh, Resume };
-  FrameWriter(const std::string& directory, const std::string& sceneText, Start start = Start::Fresh);
+  FrameWriter(const std::string& directory, const std::string& sceneText, Start start = Start::Fresh,
+              OutputSettings settings = {});
+  // Writes the frames still queued (errors are swallowed here: call flush()
+  // to see them) and stops the writer threads.
+  ~FrameWriter();
+  FrameWriter(const FrameWriter&) = delete;
+  FrameWriter& operator=(const FrameWriter&) = delete;
+  // Captures frame `frame` of `sim` and queues it for writing.
   void writeFrame(Simulation& sim, int frame, double stepMs);
+  // Returns once every queued frame is on disk and listed; rethrows the
+  // first error a writer thread met (a full disk, say).
+  void flush();
   const std::string& directory() const { return dir_; }
-  int framesWritten() const { return frames_; }
+  // Frames on disk and listed in the .pvd files (queued ones not counted).
+  int framesWritten() const { return frames_.load(); }
+  // Whether some step had to wait for a frame to be written.
+  bool waitedForDisk() const { return waitedForDisk_.load(); }
+  // Tests: each writer thread sleeps this long before writing a frame (a
+  // slow disk on purpose).
+  void setWriteDelayForTesting(double seconds) { testDelaySeconds_ = seconds; }
 
   // Checkpoints: the .pvd lists, the stats columns and how much of
   // stats.csv belongs to the saved frames.
@@ -55,18 +87,63 @@ class FrameWriter {
   void resume(const ResumeState& state);
 
  private:
+  // What does not change during a run, taken from the first frame.
+  struct ClothLayout {
+    std::string collection;  // "cloth_<name>"
+    int phase = 0, firstVertex = 0, vertexCount = 0;
+    std::vector<std::array<int, 3>> triangles;
+  };
+  // A frame as captured on the stepping thread.
+  struct Capture {
+    long long sequence = 0;
+    int frame = 0;
+    double time = 0.0;
+    std::vector<Float4> position;
+    std::vector<Vec3> velocity;
+    std::vector<float> mass, radius, density;
+    std::vector<int> phase, id;
+    std::vector<std::vector<float>> channels;
+    StatsRow stats;
+  };
+  // A frame's files written; what its commit adds to the .pvd files.
+  struct Written {
+    std::string water, surface;
+    std::vector<std::string> cloth;
+  };
+  void captureLayout(Simulation& sim);
+  Written writeFiles(const Capture& c) const;
+  void commit(const Capture& c, const Written& files);
+  void writerLoop();
   void writeStatsRow(const StatsRow& row);
-  void writeCloth(Simulation& sim, int frame);
-  void writeWaterSurface(Simulation& sim, int frame, const std::vector<Vec3>& points, const std::vector<float>& mass,
-                         const std::vector<float>& radius);
+
   std::string dir_;
+  OutputSettings settings_;
   PvdCollection water_;
   std::vector<std::unique_ptr<PvdCollection>> cloth_;
   std::unique_ptr<PvdCollection> surface_;
   std::ofstream stats_;
   std::uint64_t statsBytes_ = 0;  // length of stats.csv after the last row
   std::vector<std::string> statsColumns_;
-  int frames_ = 0;
+  std::atomic<int> frames_{0};
+
+  bool haveLayout_ = false;
+  std::vector<ClothLayout> clothLayout_;
+  std::vector<std::string> channelNames_;
+  bool surfaceOn_ = false;
+  float surfaceCellSize_ = 0.f, surfaceIso_ = 0.5f;
+  float restDensity_ = 1000.f;
+
+  // The queue and its writer threads.
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::unique_ptr<Capture>> queue_;
+  long long captured_ = 0;   // frames captured (sequence numbers 0, 1, ...)
+  long long committed_ = 0;  // frames committed, in sequence order
+  bool stopping_ = false;
+  std::exception_ptr error_;
+  std::vector<std::thread> threads_;
+  std::atomic<bool> waitedForDisk_{false};
+  double testDelaySeconds_ = 0.0;
 };
 
 // Creates a directory and its parents; throws InputError if impossible.

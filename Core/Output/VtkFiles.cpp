@@ -12,7 +12,6 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
-#include <vtkZLibDataCompressor.h>
 
 #include <cstdio>
 
@@ -44,19 +43,24 @@ void addPointData(vtkPointData* pd, const std::vector<PointArray>& data, std::si
 }
 
 template <class Writer>
-void configureAndWrite(Writer* w, const std::string& path) {
+void configureAndWrite(Writer* w, const std::string& path, Compression compression) {
   std::string tmp = path + ".tmp";
   w->SetFileName(tmp.c_str());
   w->SetDataModeToAppended();
   w->EncodeAppendedDataOff();  // raw binary appended
-  vtkNew<vtkZLibDataCompressor> z;
-  w->SetCompressor(z);
+  switch (compression) {
+    case Compression::None: w->SetCompressorTypeToNone(); break;
+    case Compression::LZ4: w->SetCompressorTypeToLZ4(); break;
+    case Compression::ZLib: w->SetCompressorTypeToZLib(); break;
+    case Compression::LZMA: w->SetCompressorTypeToLZMA(); break;
+  }
   if (!w->Write()) throw std::runtime_error("cannot write '" + path + "'");
   if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename '" + tmp + "'");
 }
 }  // namespace
 
-void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points, const std::vector<PointArray>& data) {
+void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points, const std::vector<PointArray>& data,
+                       Compression compression) {
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(makePoints(points));
   const vtkIdType n = static_cast<vtkIdType>(points.size());
@@ -74,11 +78,12 @@ void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points,
   addPointData(grid->GetPointData(), data, points.size());
   vtkNew<vtkXMLUnstructuredGridWriter> w;
   w->SetInputData(grid);
-  configureAndWrite(w.GetPointer(), path);
+  configureAndWrite(w.GetPointer(), path, compression);
 }
 
 void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
-                  const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data) {
+                  const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data,
+                  Compression compression) {
   vtkNew<vtkPolyData> poly;
   poly->SetPoints(makePoints(points));
   vtkNew<vtkCellArray> polys;
@@ -90,13 +95,13 @@ void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
   addPointData(poly->GetPointData(), data, points.size());
   vtkNew<vtkXMLPolyDataWriter> w;
   w->SetInputData(poly);
-  configureAndWrite(w.GetPointer(), path);
+  configureAndWrite(w.GetPointer(), path, compression);
 }
 
-void writePolyDataVtp(const std::string& path, vtkPolyData* poly) {
+void writePolyDataVtp(const std::string& path, vtkPolyData* poly, Compression compression) {
   vtkNew<vtkXMLPolyDataWriter> w;
   w->SetInputData(poly);
-  configureAndWrite(w.GetPointer(), path);
+  configureAndWrite(w.GetPointer(), path, compression);
 }
 
 void writeFileAtomically(const std::string& path, const std::string& content) {

@@ -1,10 +1,12 @@
 #pragma once
-// VTK XML files (binary appended, zlib-compressed) through the VTK library.
+// VTK XML files (binary appended, compressed as Output.compression says)
+// through the VTK library.
 #include <array>
 #include <string>
 #include <vector>
 
 #include "Base/Vec3.h"
+#include "Output/OutputSettings.h"
 
 class vtkPolyData;
 
@@ -17,14 +19,16 @@ struct PointArray {
 };
 
 // Particles as an unstructured grid of vertex cells (ParaView can glyph them).
-void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points, const std::vector<PointArray>& data);
+void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points, const std::vector<PointArray>& data,
+                       Compression compression);
 
 // A triangle mesh as poly data.
 void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
-                  const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data);
+                  const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data,
+                  Compression compression);
 
 // Any poly data (e.g. the water surface), written the same way.
-void writePolyDataVtp(const std::string& path, vtkPolyData* poly);
+void writePolyDataVtp(const std::string& path, vtkPolyData* poly, Compression compression);
 
 // Writes `content` to `path` atomically (temporary file, fsync, rename), so a
 // reader never sees a half-written file.

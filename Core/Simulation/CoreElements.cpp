@@ -205,6 +205,24 @@ class ColliderModule : public Module {
 // other elements are checked); as a module it does nothing.
 class NoModule : public Module {};
 
+class OutputModule : public Module {
+ public:
+  explicit OutputModule(const ElementParams& p) : p_(p) {}
+  void configure(Simulation& sim) override {
+    const std::string c = p_.text("compression");
+    OutputSettings& o = sim.settings.output;
+    o.compression = c == "none" ? Compression::None
+                    : c == "zlib" ? Compression::ZLib
+                    : c == "lzma" ? Compression::LZMA
+                                  : Compression::LZ4;
+    o.writerThreads = int(p_.integer("writerThreads"));
+    o.queuedFrames = int(p_.integer("queuedFrames"));
+  }
+
+ private:
+  ElementParams p_;
+};
+
 class WaterSurfaceModule : public Module {
  public:
   explicit WaterSurfaceModule(const ElementParams& p) : p_(p) {}
@@ -338,6 +356,19 @@ void registerCoreElements(ModuleRegistry& r) {
             .real("viewAngle", "deg", "30", "Vertical field of view.", 1.0, 170.0)
             .makeUnique()
             .create([](const ElementParams&) { return std::make_unique<NoModule>(); }));
+  r.add(ElementDecl("Output",
+                    "How frames are written: the compressor of the VTK files and the background threads that "
+                    "write them while the simulation goes on (Doc/output.md).",
+                    "Output")
+            .choice("compression", {"lz4", "zlib", "lzma", "none"}, "lz4",
+                    "Compressor of the .vtu/.vtp files (Doc/output.md measures MB and ms per frame of each).")
+            .integer("writerThreads", "2",
+                     "Threads that build and write frame files in the background (0: on the stepping thread).", 0,
+                     64)
+            .integer("queuedFrames", "4",
+                     "Frames captured and not yet written before a step waits for the disk.", 1, 1000)
+            .makeUnique()
+            .create([](const ElementParams& p) { return std::make_unique<OutputModule>(p); }));
   r.add(ElementDecl("WaterSurface",
                     "Writes a water surface mesh per frame (water_surface.pvd): the particles' relative density "
                     "splatted on a grid and contoured with flying edges (VTK).",

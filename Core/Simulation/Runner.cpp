@@ -33,6 +33,7 @@ RunProgress Runner::run(const RunOptions& o, const std::function<void(const RunP
   p.frame = o.startFrame;
   p.simTime = sim_.time();
   if (o.startFrame == 0 && writer_) writer_->writeFrame(sim_, 0, 0.0);
+  p.framesWritten = writer_ ? writer_->framesWritten() : o.startFrame + 1;
   if (onFrame) onFrame(p);
   const long long firstStep = sim_.stepIndex();
   for (int f = o.startFrame + 1; f <= p.frames && !stop_; ++f) {
@@ -49,6 +50,7 @@ RunProgress Runner::run(const RunOptions& o, const std::function<void(const RunP
     if (bad.found) throw InstabilityError(bad, describeInstability(bad, sim_.settings.maxSpeed));
     if (writer_) writer_->writeFrame(sim_, f, steps ? ms / steps : 0.0);
     p.frame = f;
+    p.framesWritten = writer_ ? writer_->framesWritten() : f + 1;
     p.simTime = sim_.time();
     p.steps = sim_.stepIndex() - firstStep;
     p.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -57,11 +59,19 @@ RunProgress Runner::run(const RunOptions& o, const std::function<void(const RunP
     p.etaSeconds = done > 0 ? p.wallSeconds / done * (p.frames - p.frame) : 0.0;
     if (onFrame) onFrame(p);
     if (writer_ && o.checkpointEvery > 0 && (f % o.checkpointEvery == 0 || f == p.frames || stop_)) {
+      writer_->flush();  // the checkpoint lists the frames on disk
+      p.framesWritten = writer_->framesWritten();
       CheckpointHeader h = o.checkpointHeader;
       h.frame = f;
       h.plannedFrames = p.frames;
       writeCheckpoint(o.checkpointPath, h, *writer_, sim_);
     }
+  }
+  if (writer_) {
+    const int before = p.framesWritten;
+    writer_->flush();
+    p.framesWritten = writer_->framesWritten();
+    if (onFrame && p.framesWritten != before) onFrame(p);  // the progress reaches the frames written
   }
   return p;
 }

@@ -29,7 +29,8 @@ struct RunOptions {
 };
 
 struct RunProgress {
-  int frame = 0, frames = 0;
+  int frame = 0, frames = 0;  // the frame simulated last, of frames
+  int framesWritten = 0;      // frames on disk (frame 0 counts; queued frames do not)
   double simTime = 0.0, endTime = 0.0;
   long long steps = 0;
   double stepsPerSecond = 0.0;

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "Base/Vec3.h"
+#include "Output/OutputSettings.h"
 
 namespace soak {
 
@@ -37,6 +38,7 @@ struct SimulationSettings {
   float surfaceCellSize = 0.f;  // m; > 0: write a water surface mesh per frame (<WaterSurface>)
   float surfaceIso = 0.5f;      // relative density of that surface
   ResourceLimits limits;
+  OutputSettings output;        // <Output>
   std::string where;            // <Simulation>'s file:line (empty when the scene has none)
 };
 

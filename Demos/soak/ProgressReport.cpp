@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace soak::cli {
@@ -19,23 +20,25 @@ void ProgressReport::update(const RunProgress& p) {
   if (quiet_) return;
   char eta[32];
   formatDuration(p.etaSeconds, eta, sizeof(eta));
-  const double frac = p.frames > 0 ? double(p.frame) / p.frames : 1.0;
+  // Frames on disk: the frame simulated last may still be queued for writing.
+  const int written = std::max(0, p.framesWritten - 1);
+  const double frac = p.frames > 0 ? double(written) / p.frames : 1.0;
   if (tty_) {
     const int width = 30;
     int filled = static_cast<int>(frac * width + 0.5);
     char bar[width + 1];
     for (int i = 0; i < width; ++i) bar[i] = i < filled ? '#' : '.';
     bar[width] = 0;
-    std::fprintf(stderr, "\r[%s] frame %d/%d  t=%.3f/%.3f s  %.1f steps/s  ETA %s ", bar, p.frame, p.frames,
+    std::fprintf(stderr, "\r[%s] frame %d/%d  t=%.3f/%.3f s  %.1f steps/s  ETA %s ", bar, written, p.frames,
                  p.simTime, p.endTime, p.stepsPerSecond, eta);
     std::fflush(stderr);
     drawn_ = true;
     return;
   }
   int decile = static_cast<int>(frac * 10.0);
-  if (decile == lastDecile_ && p.frame != p.frames) return;
+  if (decile == lastDecile_ && written != p.frames) return;
   lastDecile_ = decile;
-  std::fprintf(stderr, "progress: frame %d/%d (%3.0f%%)  t=%.3f s  %.1f steps/s  ETA %s\n", p.frame, p.frames,
+  std::fprintf(stderr, "progress: frame %d/%d (%3.0f%%)  t=%.3f s  %.1f steps/s  ETA %s\n", written, p.frames,
                frac * 100.0, p.simTime, p.stepsPerSecond, eta);
 }
 

@@ -72,7 +72,8 @@ int runCommand(const RunArguments& args) {
   RunOptions& options = run.options;
   const int planned = run.plannedFrames;
 
-  FrameWriter writer(out, scene.textAsRun(), checkpoint ? FrameWriter::Start::Resume : FrameWriter::Start::Fresh);
+  FrameWriter writer(out, scene.textAsRun(), checkpoint ? FrameWriter::Start::Resume : FrameWriter::Start::Fresh,
+                     sim.settings.output);
   Runner writingRunner(sim, &writer);
   if (checkpoint) {
     checkpoint->restore(writer, sim);
@@ -94,12 +95,21 @@ int runCommand(const RunArguments& args) {
   ProgressReport progress(args.quiet);
   sim.checkStages = args.checkStages;
   RunProgress result;
+  bool toldDiskBound = false;
   try {
     result = writingRunner.run(options, [&](const RunProgress& p) {
       progress.update(p);
+      if (writer.waitedForDisk() && !toldDiskBound && !args.quiet) {
+        toldDiskBound = true;
+        progress.finish();
+        std::fprintf(stderr,
+                     "soak: frames are written more slowly than they are simulated: steps now wait for the disk "
+                     "(a lower Simulation.frameRate, or Output.compression=lz4 or none, writes less)\n");
+      }
       if (g_interrupted) writingRunner.requestStop();
     });
   } catch (const InstabilityError& e) {
+    writer.flush();  // the frames before the instability are whole and kept
     progress.finish();
     std::fprintf(stderr, "soak: %s\n      frames 0-%d (t <= %.4f s) are kept in %s%s\n", e.what(),
                  writer.framesWritten() - 1, (writer.framesWritten() - 1) / sim.settings.frameRate, out.c_str(),
