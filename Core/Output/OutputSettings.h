@@ -8,8 +8,8 @@ enum class Compression { None, LZ4, ZLib, LZMA };
 
 struct OutputSettings {
   Compression compression = Compression::LZ4;
-  int writerThreads = 2;  // background threads that build and write frame files
-  int queuedFrames = 4;   // frames captured and not yet on disk before a step waits
+  int writerThreads = 4;  // background threads that build and write frame files
+  int queuedFrames = 8;   // frames captured and not yet on disk before a step waits
 };
 
 }  // namespace soak

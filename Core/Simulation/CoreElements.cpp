@@ -362,10 +362,10 @@ void registerCoreElements(ModuleRegistry& r) {
                     "Output")
             .choice("compression", {"lz4", "zlib", "lzma", "none"}, "lz4",
                     "Compressor of the .vtu/.vtp files (Doc/output.md measures MB and ms per frame of each).")
-            .integer("writerThreads", "2",
+            .integer("writerThreads", "4",
                      "Threads that build and write frame files in the background (0: on the stepping thread).", 0,
                      64)
-            .integer("queuedFrames", "4",
+            .integer("queuedFrames", "8",
                      "Frames captured and not yet written before a step waits for the disk.", 1, 1000)
             .makeUnique()
             .create([](const ElementParams& p) { return std::make_unique<OutputModule>(p); }));
