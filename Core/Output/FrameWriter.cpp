@@ -94,25 +94,32 @@ void FrameWriter::captureLayout(Simulation& sim) {
 }
 
 void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
+  const auto start = std::chrono::steady_clock::now();
+  struct AddTime {
+    double& total;
+    std::chrono::steady_clock::time_point start;
+    ~AddTime() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+  } addTime{captureSeconds_, start};
   if (!haveLayout_) captureLayout(sim);
   // On the stepping thread: copies of the arrays and the stats row only.
   auto c = std::make_unique<Capture>();
   const ParticleState& ps = sim.particles;
   c->frame = frame;
   c->time = sim.time();
-  c->position = ps.downloadPositions();
-  c->velocity = ps.downloadVelocities();
-  c->mass = ps.downloadMasses();
+  Simulation::HostParticles host = sim.downloadParticles();
+  const StatsRow simStats = sim.collectStats(host);
+  c->position = std::move(host.position);
+  c->velocity = std::move(host.velocity);
+  c->mass = std::move(host.mass);
+  c->phase = std::move(host.phase);
+  c->id = std::move(host.id);
   c->radius = ps.downloadRadii();
-  c->phase = ps.downloadPhases();
-  c->id = ps.downloadIds();
   c->density = sim.fluid.downloadDensity(int(c->phase.size()));
   if (!clothLayout_.empty())
     for (int k = 0; k < ps.channelCount(); ++k) c->channels.push_back(ps.downloadChannel(k));
   c->stats.add("frame", frame);
   c->stats.add("time", sim.time());
   c->stats.add("step", double(sim.stepIndex()));
-  const StatsRow simStats = sim.collectStats();
   for (const auto& col : simStats.values()) c->stats.add(col.first, col.second);
   c->stats.add("step_ms", stepMs);
 

@@ -60,6 +60,9 @@ class FrameWriter {
   int framesWritten() const { return frames_.load(); }
   // Whether some step had to wait for a frame to be written.
   bool waitedForDisk() const { return waitedForDisk_.load(); }
+  // Seconds the stepping thread spent in writeFrame (copies, stats, and any
+  // wait for a full queue), over all frames.
+  double captureSeconds() const { return captureSeconds_; }
   // Tests: each writer thread sleeps this long before writing a frame (a
   // slow disk on purpose).
   void setWriteDelayForTesting(double seconds) { testDelaySeconds_ = seconds; }
@@ -144,6 +147,7 @@ class FrameWriter {
   std::vector<std::thread> threads_;
   std::atomic<bool> waitedForDisk_{false};
   double testDelaySeconds_ = 0.0;
+  double captureSeconds_ = 0.0;
 };
 
 // Creates a directory and its parents; throws InputError if impossible.

@@ -8,7 +8,7 @@ enum class Compression { None, LZ4, ZLib, LZMA };
 
 struct OutputSettings {
   Compression compression = Compression::LZ4;
-  int writerThreads = 4;  // background threads that build and write frame files
+  int writerThreads = 8;  // background threads that build and write frame files
   int queuedFrames = 8;   // frames captured and not yet on disk before a step waits
 };
 

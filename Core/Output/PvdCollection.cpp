@@ -25,7 +25,7 @@ void PvdCollection::write() const {
     o << "    <DataSet timestep=\"" << std::setprecision(10) << e.first << "\" group=\"\" part=\"0\" file=\""
       << e.second << "\"/>\n";
   o << "  </Collection>\n</VTKFile>\n";
-  writeFileAtomically(path_, o.str());
+  writeFileAtomically(path_, o.str(), /*durable=*/false);
 }
 
 }  // namespace soak

@@ -104,7 +104,7 @@ void writePolyDataVtp(const std::string& path, vtkPolyData* poly, Compression co
   configureAndWrite(w.GetPointer(), path, compression);
 }
 
-void writeFileAtomically(const std::string& path, const std::string& content) {
+void writeFileAtomically(const std::string& path, const std::string& content, bool durable) {
   std::string tmp = path + ".tmp";
   int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (fd < 0) throw std::runtime_error("cannot write '" + tmp + "'");
@@ -119,7 +119,7 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
     p += k;
     left -= static_cast<std::size_t>(k);
   }
-  ::fsync(fd);
+  if (durable) ::fsync(fd);
   ::close(fd);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename '" + tmp + "'");
 }

@@ -30,8 +30,12 @@ void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
 // Any poly data (e.g. the water surface), written the same way.
 void writePolyDataVtp(const std::string& path, vtkPolyData* poly, Compression compression);
 
-// Writes `content` to `path` atomically (temporary file, fsync, rename), so a
-// reader never sees a half-written file.
-void writeFileAtomically(const std::string& path, const std::string& content);
+// Writes `content` to `path` atomically (temporary file, rename), so a
+// reader, or a run killed at any moment, never sees a half-written file.
+// `durable` also syncs the file to the disk before the rename (checkpoints:
+// they must survive a power cut); a .pvd need not, since the frame files it
+// lists are not synced either, and a sync per frame would set the pace of
+// the writers.
+void writeFileAtomically(const std::string& path, const std::string& content, bool durable = true);
 
 }  // namespace soak

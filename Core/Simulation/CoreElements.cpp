@@ -362,7 +362,7 @@ void registerCoreElements(ModuleRegistry& r) {
                     "Output")
             .choice("compression", {"lz4", "zlib", "lzma", "none"}, "lz4",
                     "Compressor of the .vtu/.vtp files (Doc/output.md measures MB and ms per frame of each).")
-            .integer("writerThreads", "4",
+            .integer("writerThreads", "8",
                      "Threads that build and write frame files in the background (0: on the stepping thread).", 0,
                      64)
             .integer("queuedFrames", "8",

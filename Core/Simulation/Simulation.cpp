@@ -195,10 +195,22 @@ bool Simulation::maintenanceStep() const {
   return maintenanceInterval <= 1 || stepIndex_ % maintenanceInterval == 0;
 }
 
-StatsRow Simulation::collectStats() {
+Simulation::HostParticles Simulation::downloadParticles() const {
+  HostParticles h;
+  h.position = particles.downloadPositions();
+  h.velocity = particles.downloadVelocities();
+  h.mass = particles.downloadMasses();
+  h.phase = particles.downloadPhases();
+  h.id = particles.downloadIds();
+  return h;
+}
+
+StatsRow Simulation::collectStats() { return collectStats(downloadParticles()); }
+
+StatsRow Simulation::collectStats(const HostParticles& host) {
   StatsRow row;
-  std::vector<int> phase = particles.downloadPhases();
-  std::vector<float> mass = particles.downloadMasses();
+  const std::vector<int>& phase = host.phase;
+  const std::vector<float>& mass = host.mass;
   long long water = 0, clothCount = 0;
   double waterMass = 0.0, pendingDrained = 0.0;
   for (std::size_t i = 0; i < phase.size(); ++i) {
@@ -211,7 +223,7 @@ StatsRow Simulation::collectStats() {
       ++clothCount;
     }
   }
-  std::vector<Vec3> velocity = particles.downloadVelocities();
+  const std::vector<Vec3>& velocity = host.velocity;
   float maxSpeed = 0.f;
   double kinetic = 0.0;
   for (std::size_t i = 0; i < velocity.size(); ++i) {
@@ -234,7 +246,7 @@ StatsRow Simulation::collectStats() {
   if (!cloth.empty()) {
     // Edge strain per cloth (ClothSystem::strain): warp and weft edges of a sheet, all edges of a mesh.
     const std::vector<ClothStrain> strain =
-        cloth.strain(particles.downloadPositions(), particles.downloadIds(), phase);
+        cloth.strain(host.position, host.id, phase);
     for (std::size_t k = 0; k < strain.size(); ++k) {
       row.add("strain_mean_" + cloth.objects()[k].name, strain[k].mean);
       row.add("strain_p99_" + cloth.objects()[k].name, strain[k].p99);

@@ -60,6 +60,16 @@ class Simulation {
 
   // Counts and water budget for stats.csv (one reduction per call).
   StatsRow collectStats();
+  // The same from host copies of the particle arrays already made (the
+  // frame writer copies them for the frame anyway).
+  struct HostParticles {
+    std::vector<Float4> position;
+    std::vector<Vec3> velocity;
+    std::vector<float> mass;
+    std::vector<int> phase, id;
+  };
+  HostParticles downloadParticles() const;
+  StatsRow collectStats(const HostParticles& host);
 
   // Checkpoints: step counter, water budget, particles and every module's
   // state. loadState expects a simulation built from the same scene

@@ -33,7 +33,7 @@ using namespace soak;
 namespace {
 
 struct Timing {
-  double seconds = 0.0, megabytes = 0.0;
+  double seconds = 0.0, megabytes = 0.0, captureMs = 0.0;
   int frames = 0;
   long long steps = 0;
 };
@@ -60,12 +60,14 @@ Timing timeRun(const std::string& scene, Device device, double time, std::vector
                                            sim.settings.output);
   Runner runner(sim, writer.get());
   const RunProgress p = runner.run(options);
+  const double capture = writer ? writer->captureSeconds() : 0.0;
   writer.reset();  // joins the writer threads: every frame is on disk
   synchronize(device);
   Timing t;
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   t.frames = p.frame + 1;
   t.steps = p.steps;
+  t.captureMs = 1e3 * capture / double(t.frames);
   if (!dir.empty()) {
     t.megabytes = folderMegabytes(dir);
     std::filesystem::remove_all(dir);
@@ -109,7 +111,8 @@ int main(int argc, char** argv) {
                 time >= 0 ? std::to_string(time).c_str() : "the scene's");
     const Timing bare = timeRun(scene, device, time, overrides, "");
     std::printf("no output: %.3f s wall, %lld steps\n\n", bare.seconds, bare.steps);
-    std::printf("| output | frames | wall s | / no output | / 1 fps | MB | MB/s |\n|---|---|---|---|---|---|---|\n");
+    std::printf("| output | frames | wall s | / no output | / 1 fps | MB | MB/s | ms a frame on the stepping thread |\n"
+                "|---|---|---|---|---|---|---|---|\n");
     for (const std::string& config : split(configs)) {
       const bool sync = config.size() > 5 && config.substr(config.size() - 5) == "-sync";
       const std::string compressor = sync ? config.substr(0, config.size() - 5) : config;
@@ -122,8 +125,9 @@ int main(int argc, char** argv) {
       const Timing full = timeRun(scene, device, time, o, out);
       for (const auto& [label, t] : {std::pair<std::string, Timing>{config + ", 1 fps", oneFps},
                                      std::pair<std::string, Timing>{config + ", scene fps", full}})
-        std::printf("| %s | %d | %.3f | %.3f | %.3f | %.1f | %.1f |\n", label.c_str(), t.frames, t.seconds,
-                    t.seconds / bare.seconds, t.seconds / oneFps.seconds, t.megabytes, t.megabytes / t.seconds);
+        std::printf("| %s | %d | %.3f | %.3f | %.3f | %.1f | %.1f | %.2f |\n", label.c_str(), t.frames, t.seconds,
+                    t.seconds / bare.seconds, t.seconds / oneFps.seconds, t.megabytes, t.megabytes / t.seconds,
+                    t.captureMs);
       std::fflush(stdout);
     }
     return 0;
