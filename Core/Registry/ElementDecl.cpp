@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "Base/MessageText.h"
 #include "Base/SafeName.h"
 
 namespace soak {
@@ -21,13 +22,6 @@ const char* paramTypeName(ParamType t) {
   return "?";
 }
 
-namespace {
-std::string number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-}  // namespace
 
 std::string ParamDecl::rangeText() const {
   if (type == ParamType::Choice) {
@@ -45,9 +39,9 @@ std::string ParamDecl::rangeText() const {
     hi = hi && max < 2147483647.0;
   }
   if (!lo && !hi) return "any";
-  std::string s = lo ? (minExclusive ? "(" : "[") + number(min) : "(-inf";
+  std::string s = lo ? (minExclusive ? "(" : "[") + formatNumber(min) : "(-inf";
   s += ", ";
-  s += hi ? number(max) + "]" : "inf)";
+  s += hi ? formatNumber(max) + "]" : "inf)";
   return s;
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "Base/Error.h"
+#include "Base/MessageText.h"
 #include "Base/ReadInput.h"
 #include "Scene/Suggest.h"
 #include "Scene/ValueParse.h"
@@ -71,10 +72,7 @@ Override parseOverride(const std::string& s) {
 // Where a value given by --set is blamed: the option itself, not the line of
 // the element it lands on (or line 0 of an element it had to add).
 using OverrideOrigins = std::map<std::pair<const void*, std::string>, std::string>;
-std::string overrideBlame(const std::string& text) {
-  constexpr std::size_t kShown = 60;
-  return "--set '" + (text.size() <= kShown ? text : text.substr(0, kShown) + "...") + "'";
-}
+std::string overrideBlame(const std::string& text) { return "--set '" + clipForMessage(text) + "'"; }
 
 void applyOverride(pugi::xml_node root, const Override& o, const ModuleRegistry& registry,
                    OverrideOrigins& origins) {

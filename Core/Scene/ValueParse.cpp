@@ -7,6 +7,7 @@
 #include <sstream>
 #include <vector>
 
+#include "Base/MessageText.h"
 #include "Base/SafeName.h"
 
 namespace soak {
@@ -44,14 +45,7 @@ bool toInteger(const std::string& s, long long& v) {
   v = std::strtoll(s.c_str(), &end, 10);
   return end == s.c_str() + s.size() && errno == 0;
 }
-// A value as messages show it: long values are cut (a message never echoes
-// a megabyte of attribute back).
-std::string clip(const std::string& raw) {
-  constexpr std::size_t kShown = 60;
-  if (raw.size() <= kShown) return raw;
-  return raw.substr(0, kShown) + "... (" + std::to_string(raw.size()) + " characters)";
-}
-std::string shown(const std::string& raw) { return "'" + clip(raw) + "'"; }
+std::string shown(const std::string& raw) { return "'" + clipForMessage(raw) + "'"; }
 bool inRange(const ParamDecl& d, double v) {
   if (d.minExclusive ? !(v > d.min) : !(v >= d.min)) return false;
   return v <= d.max;
@@ -61,12 +55,12 @@ bool inRange(const ParamDecl& d, double v) {
 bool fitsFloat(const ParamDecl& d, const std::string& text, double v, std::string& error) {
   const float f = static_cast<float>(v);
   if (!std::isfinite(f)) {
-    error = "value " + clip(text) + " is beyond a 32-bit float (largest 3.4e38), the type it is stored in";
+    error = "value " + clipForMessage(text) + " is beyond a 32-bit float (largest 3.4e38), the type it is stored in";
     return false;
   }
   if (!inRange(d, double(f))) {
     std::ostringstream s;
-    s << "value " << clip(text) << " becomes " << f << " as a 32-bit float, the type it is stored in, "
+    s << "value " << clipForMessage(text) << " becomes " << f << " as a 32-bit float, the type it is stored in, "
       << "which is out of range; allowed: " << d.rangeText();
     error = s.str();
     return false;
@@ -90,7 +84,7 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
         return false;
       }
       if (!inRange(d, out.real)) {
-        error = "value " + clip(text) + " is out of range; allowed: " + d.rangeText();
+        error = "value " + clipForMessage(text) + " is out of range; allowed: " + d.rangeText();
         return false;
       }
       return fitsFloat(d, text, out.real, error);
@@ -101,7 +95,7 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
         return false;
       }
       if (!inRange(d, double(out.integer)) || !fitsInt(out.integer)) {
-        error = "value " + clip(text) + " is out of range; allowed: " + d.rangeText();
+        error = "value " + clipForMessage(text) + " is out of range; allowed: " + d.rangeText();
         return false;
       }
       return true;
@@ -124,7 +118,7 @@ bool parseParamValue(const ParamDecl& d, const std::string& raw, ParamValue& out
       }
       for (int k = 0; k < 3; ++k)
         if (!std::isfinite(float(c[k]))) {
-          error = shown(raw) + ": component " + clip(parts[k]) + " is beyond a 32-bit float (largest 3.4e38)";
+          error = shown(raw) + ": component " + clipForMessage(parts[k]) + " is beyond a 32-bit float (largest 3.4e38)";
           return false;
         }
       out.vector = Vec3(float(c[0]), float(c[1]), float(c[2]));

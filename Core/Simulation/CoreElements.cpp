@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "Base/Error.h"
+#include "Base/MessageText.h"
 #include "Registry/ModuleRegistry.h"
 #include "Simulation/ElementGroups.h"
 #include "Simulation/Simulation.h"
@@ -12,11 +13,6 @@ namespace soak {
 
 namespace {
 
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof(b), "%.6g", v);
-  return b;
-}
 
 class SimulationModule : public Module {
  public:
@@ -46,8 +42,8 @@ class SimulationModule : public Module {
     // A frame every 1/frameRate s, a step every timeStep s.
     const double stepsPerFrame = std::ceil(1.0 / (sim.settings.frameRate * sim.settings.timeStep) - 1e-9);
     if (!(stepsPerFrame <= double(sim.settings.limits.maxStepsPerFrame)))
-      throw InputError("<Simulation>: timeStep " + number(sim.settings.timeStep) + " s at frameRate " +
-                           number(sim.settings.frameRate) + " needs " + number(stepsPerFrame) +
+      throw InputError("<Simulation>: timeStep " + formatNumber(sim.settings.timeStep) + " s at frameRate " +
+                           formatNumber(sim.settings.frameRate) + " needs " + formatNumber(stepsPerFrame) +
                            " steps per frame, more than maxStepsPerFrame = " +
                            std::to_string(sim.settings.limits.maxStepsPerFrame) +
                            "; raise timeStep or frameRate, or raise Simulation.maxStepsPerFrame",
@@ -235,12 +231,12 @@ class WaterSurfaceModule : public Module {
   void setup(Simulation& sim) override {
     const double across = 2.0 * double(sim.water.supportRadius) / double(sim.settings.surfaceCellSize) + 1.0;
     if (across * across * across > double(kMaxSplatPoints))
-      throw InputError("<WaterSurface>: cellSize " + number(sim.settings.surfaceCellSize) +
-                           " m is too fine for the support radius " + number(sim.water.supportRadius) +
-                           " m: each particle would touch " + number(across * across * across) +
+      throw InputError("<WaterSurface>: cellSize " + formatNumber(sim.settings.surfaceCellSize) +
+                           " m is too fine for the support radius " + formatNumber(sim.water.supportRadius) +
+                           " m: each particle would touch " + formatNumber(across * across * across) +
                            " grid points, more than " + std::to_string(kMaxSplatPoints) +
                            "; use a cellSize of at least " +
-                           number(2.0 * double(sim.water.supportRadius) / (std::cbrt(double(kMaxSplatPoints)) - 1.0)) +
+                           formatNumber(2.0 * double(sim.water.supportRadius) / (std::cbrt(double(kMaxSplatPoints)) - 1.0)) +
                            " m",
                        p_.where());
   }

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "Base/Error.h"
+#include "Base/MessageText.h"
 #include "Simulation/Simulation.h"
 
 namespace soak {
@@ -15,11 +16,6 @@ namespace {
 std::string gib(double bytes) {
   char b[32];
   std::snprintf(b, sizeof(b), "%.3g GiB", bytes / double(1ull << 30));
-  return b;
-}
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof(b), "%.4g", v);
   return b;
 }
 std::string count(double n) {
@@ -79,7 +75,7 @@ void Simulation::checkPlannedParticles(double endTime) const {
 void Simulation::checkCellOccupancy() const {
   const double h = maxSupportRadius_, limit = double(settings.limits.maxCellParticles);
   auto refuse = [&](const std::string& what, double n, const std::string& where) {
-    throw InputError(what + ": a neighbour-grid cell (edge " + number(h) +
+    throw InputError(what + ": a neighbour-grid cell (edge " + formatNumber(h) +
                          " m, the largest support radius) would hold about " + count(n) +
                          " particles at rest, more than Simulation.maxCellParticles = " +
                          std::to_string(settings.limits.maxCellParticles) +
@@ -90,7 +86,7 @@ void Simulation::checkCellOccupancy() const {
   for (const auto& m : modules_) hasWater = hasWater || m->plannedParticles(*this, 1e30).count > 0.0;
   const double waterPerCell = std::pow(h / double(water.spacing), 3.0);
   if (hasWater && !(waterPerCell <= limit))
-    refuse("<Water> spacing " + number(double(water.spacing)) + " m", waterPerCell, water.where);
+    refuse("<Water> spacing " + formatNumber(double(water.spacing)) + " m", waterPerCell, water.where);
   for (const ClothObject& c : cloth.objects()) {
     const double perCell = h * h * double(c.vertexCount) / std::max(c.restArea, 1e-30);
     if (!(perCell <= limit)) refuse("<Cloth> '" + c.name + "'", perCell, c.where);

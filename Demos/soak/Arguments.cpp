@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "Base/Error.h"
+#include "Base/MessageText.h"
 #include "Simulation/Runner.h"
 
 namespace soak::cli {
@@ -43,7 +44,7 @@ double toNumber(const std::string& opt, const std::string& v) {
   char* end = nullptr;
   double d = std::strtod(v.c_str(), &end);
   if (v.empty() || *end || !std::isfinite(d))
-    throw InputError(opt + ": '" + v.substr(0, 60) + (v.size() > 60 ? "...'" : "'") + " is not a finite number");
+    throw InputError(opt + ": '" + clipForMessage(v) + "' is not a finite number");
   return d;
 }
 // An integer option in [lo, hi]; the message names the range.

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <regex>
 #include <string>
 
@@ -31,6 +32,17 @@ int pvdEntries(const std::string& path) {
   return int(std::distance(std::sregex_iterator(pvd.begin(), pvd.end(), entry), std::sregex_iterator()));
 }
 
+// A writer into a fresh folder with one background thread, `queued` frames
+// of queue, slowed to `delay` seconds a frame.
+std::unique_ptr<FrameWriter> slowWriter(const std::string& dir, int queued, double delay) {
+  OutputSettings settings;
+  settings.writerThreads = 1;
+  settings.queuedFrames = queued;
+  auto writer = std::make_unique<FrameWriter>(dir, kScene, FrameWriter::Start::Fresh, settings);
+  writer->setWriteDelayForTesting(delay);
+  return writer;
+}
+
 double secondsOf(const std::function<void()>& f) {
   const auto t0 = std::chrono::steady_clock::now();
   f();
@@ -46,12 +58,9 @@ TEST(OutputPipeline, AStepDoesNotWaitForASlowWriter) {
   TestRegistry reg;
   auto sim = makeSimulation(kScene, Device::Cpu, reg);
   const std::string dir = freshTempPath("output_slow_writer");
-  OutputSettings settings;
-  settings.writerThreads = 1;
-  settings.queuedFrames = 8;
-  FrameWriter writer(dir, kScene, FrameWriter::Start::Fresh, settings);
   constexpr double kDelay = 0.5;
-  writer.setWriteDelayForTesting(kDelay);
+  const auto writerOwner = slowWriter(dir, 8, kDelay);
+  FrameWriter& writer = *writerOwner;
   double slowest = 0.0;
   for (int f = 0; f < 6; ++f) {
     for (int s = 0; s < 3; ++s) sim->step();
@@ -79,12 +88,9 @@ TEST(OutputPipeline, AFullQueueMakesTheStepWaitAndSaysSo) {
   TestRegistry reg;
   auto sim = makeSimulation(kScene, Device::Cpu, reg);
   const std::string dir = freshTempPath("output_full_queue");
-  OutputSettings settings;
-  settings.writerThreads = 1;
-  settings.queuedFrames = 2;
-  FrameWriter writer(dir, kScene, FrameWriter::Start::Fresh, settings);
   constexpr double kDelay = 0.4;
-  writer.setWriteDelayForTesting(kDelay);
+  const auto writerOwner = slowWriter(dir, 2, kDelay);
+  FrameWriter& writer = *writerOwner;
   writer.writeFrame(*sim, 0, 0.0);
   writer.writeFrame(*sim, 1, 0.0);
   const double third = secondsOf([&] { writer.writeFrame(*sim, 2, 0.0); });

@@ -18,15 +18,17 @@ struct SoakResult {
   std::string output;
 };
 
-inline SoakResult runSoak(const std::string& args) {
-  const std::string cmd = std::string(SOAK_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
+// A shell command's exit code and everything it printed (stdout and stderr).
+inline SoakResult runShell(const std::string& command) {
+  FILE* p = popen(("(" + command + ") 2>&1").c_str(), "r");
   std::string out;
   char buf[512];
   while (p && fgets(buf, sizeof(buf), p)) out += buf;
   const int status = p ? pclose(p) : -1;
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
+
+inline SoakResult runSoak(const std::string& args) { return runShell(std::string(SOAK_BINARY) + " " + args); }
 
 // The same under a time limit (SIGKILL after `seconds`) and a memory limit
 // (`megabytes` of address space; under AddressSanitizer, whose shadow
@@ -45,16 +47,9 @@ inline SoakResult runSoakLimited(const std::string& args, int seconds, int megab
 #else
   const bool asan = false;
 #endif
-  const std::string limit = asan ? "ASAN_OPTIONS=\"$ASAN_OPTIONS:hard_rss_limit_mb=" + std::to_string(megabytes) + "\" "
+  const std::string limit = asan ? "export ASAN_OPTIONS=\"$ASAN_OPTIONS:hard_rss_limit_mb=" + std::to_string(megabytes) + "\"; "
                                  : "ulimit -v " + std::to_string(megabytes * 1024) + "; ";
-  const std::string cmd = asan ? limit + "timeout -s KILL " + std::to_string(seconds) + " " + SOAK_BINARY + " " + args
-                               : limit + "exec timeout -s KILL " + std::to_string(seconds) + " " + SOAK_BINARY + " " + args;
-  FILE* p = popen(("(" + cmd + ") 2>&1").c_str(), "r");
-  std::string out;
-  char buf[512];
-  while (p && fgets(buf, sizeof(buf), p)) out += buf;
-  const int status = p ? pclose(p) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  return runShell(limit + "exec timeout -s KILL " + std::to_string(seconds) + " " + SOAK_BINARY + " " + args);
 }
 
 // A fresh (removed) path under the test temp folder.
