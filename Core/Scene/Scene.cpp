@@ -44,25 +44,28 @@ struct Override {
   std::string text;
 };
 
+// An override as its messages name it, cut like any value.
+std::string overrideBlame(const std::string& text) { return "--set '" + clipForMessage(text) + "'"; }
+
 Override parseOverride(const std::string& s) {
   Override o;
   o.text = s;
   std::size_t eq = s.find('=');
   std::size_t dot = s.rfind('.', eq);
   if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 >= eq)
-    throw InputError("--set '" + s + "': expected Element.attribute=value or Element[i].attribute=value");
+    throw InputError(overrideBlame(s) + ": expected Element.attribute=value or Element[i].attribute=value");
   std::string el = s.substr(0, dot);
   o.attribute = s.substr(dot + 1, eq - dot - 1);
   o.value = s.substr(eq + 1);
   std::size_t br = el.find('[');
   if (br != std::string::npos) {
-    if (el.back() != ']') throw InputError("--set '" + s + "': bad index in '" + el + "'");
+    if (el.back() != ']') throw InputError(overrideBlame(s) + ": bad index in '" + clipForMessage(el) + "'");
     try {
       o.index = std::stoi(el.substr(br + 1, el.size() - br - 2));
     } catch (...) {
-      throw InputError("--set '" + s + "': bad index in '" + el + "'");
+      throw InputError(overrideBlame(s) + ": bad index in '" + clipForMessage(el) + "'");
     }
-    if (o.index < 0) throw InputError("--set '" + s + "': index must be >= 0");
+    if (o.index < 0) throw InputError(overrideBlame(s) + ": index must be >= 0");
     el = el.substr(0, br);
   }
   o.element = el;
@@ -72,20 +75,19 @@ Override parseOverride(const std::string& s) {
 // Where a value given by --set is blamed: the option itself, not the line of
 // the element it lands on (or line 0 of an element it had to add).
 using OverrideOrigins = std::map<std::pair<const void*, std::string>, std::string>;
-std::string overrideBlame(const std::string& text) { return "--set '" + clipForMessage(text) + "'"; }
 
 void applyOverride(pugi::xml_node root, const Override& o, const ModuleRegistry& registry,
                    OverrideOrigins& origins) {
   const ElementDecl* decl = registry.find(o.element);
   if (!decl)
-    throw InputError("--set '" + o.text + "': unknown element <" + o.element + ">" +
+    throw InputError(overrideBlame(o.text) + ": unknown element <" + clipForMessage(o.element) + ">" +
                      suggestionText(o.element, registry.names()));
   std::vector<pugi::xml_node> matches;
   for (pugi::xml_node n : root.children(o.element.c_str())) matches.push_back(n);
   pugi::xml_node target;
   if (o.index >= 0) {
     if (o.index >= static_cast<int>(matches.size()))
-      throw InputError("--set '" + o.text + "': the scene has " + std::to_string(matches.size()) + " <" +
+      throw InputError(overrideBlame(o.text) + ": the scene has " + std::to_string(matches.size()) + " <" +
                        o.element + "> element(s)");
     target = matches[o.index];
   } else if (matches.size() == 1) {
@@ -94,9 +96,9 @@ void applyOverride(pugi::xml_node root, const Override& o, const ModuleRegistry&
     // A settings element the scene left out: add it so the override applies.
     target = root.append_child(o.element.c_str());
   } else if (matches.empty()) {
-    throw InputError("--set '" + o.text + "': the scene has no <" + o.element + "> element");
+    throw InputError(overrideBlame(o.text) + ": the scene has no <" + o.element + "> element");
   } else {
-    throw InputError("--set '" + o.text + "': the scene has " + std::to_string(matches.size()) + " <" +
+    throw InputError(overrideBlame(o.text) + ": the scene has " + std::to_string(matches.size()) + " <" +
                      o.element + "> elements; write " + o.element + "[0]." + o.attribute + "=... to pick one");
   }
   pugi::xml_attribute a = target.attribute(o.attribute.c_str());
@@ -208,7 +210,7 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
       std::string hint;
       if (name == "WetCloth" && !registry.hasPlugin("WetCloth"))
         hint = " (it is provided by the WetCloth plugin: is it in the plugin directory, or add <Plugin name=\"WetCloth\"/>)";
-      throw InputError("unknown element <" + name + ">" + hint + suggestionText(name, registry.names()), where(line));
+      throw InputError("unknown element <" + clipForMessage(name) + ">" + hint + suggestionText(name, registry.names()), where(line));
     }
     if (decl->unique && seen[name]++ > 0)
       throw InputError("<" + name + "> may appear only once per scene", where(line));
@@ -226,7 +228,7 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
     refuseRepeatedAttributes(n, elementWhere);
     for (pugi::xml_attribute a : n.attributes()) {
       if (!decl->find(a.name()))
-        throw InputError("<" + name + ">: unknown attribute '" + std::string(a.name()) + "'" +
+        throw InputError("<" + name + ">: unknown attribute '" + clipForMessage(a.name()) + "'" +
                              suggestionText(a.name(), paramNames(*decl)),
                          attributeWhere(a.name()));
     }

@@ -74,6 +74,7 @@ std::string caseName(const ::testing::TestParamInfo<BadInput>& info) {
     const char c = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
     if (c != '_' || name.empty() || name.back() != '_') name += c;
   }
+  name = name.substr(0, 80);  // a case with a long value still gets a readable name
   while (!name.empty() && name.back() == '_') name.pop_back();
   return name;
 }
