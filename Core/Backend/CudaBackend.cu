@@ -181,6 +181,54 @@ void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits) {
   }
 }
 
+void* allocatePinned(std::size_t bytes) {
+  void* p = nullptr;
+  cudaError_t e = cudaMallocHost(&p, bytes);
+  if (e != cudaSuccess) {
+    cudaGetLastError();
+    throw DeviceError("out of page-locked host memory allocating " + std::to_string(bytes) + " bytes (" +
+                      cudaGetErrorString(e) + ")");
+  }
+  return p;
+}
+void releasePinned(void* p) noexcept {
+  if (p) cudaFreeHost(p);
+}
+
+namespace {
+// The copy stream: non-blocking, so that the legacy default stream (the
+// compute stream) and it never wait for each other implicitly.
+cudaStream_t stream(int which) {
+  if (which == 0) return 0;
+  static cudaStream_t copyStream = [] {
+    cudaStream_t s = nullptr;
+    check(cudaStreamCreateWithFlags(&s, cudaStreamNonBlocking), "creating the copy stream");
+    return s;
+  }();
+  return copyStream;
+}
+}  // namespace
+
+void* createFence() {
+  cudaEvent_t e = nullptr;
+  check(cudaEventCreateWithFlags(&e, cudaEventDisableTiming), "creating a fence");
+  return e;
+}
+void destroyFence(void* fence) noexcept {
+  if (fence) cudaEventDestroy(static_cast<cudaEvent_t>(fence));
+}
+void recordFence(void* fence, int which) {
+  check(cudaEventRecord(static_cast<cudaEvent_t>(fence), stream(which)), "recording a fence");
+}
+void streamWaitForFence(int which, void* fence) {
+  check(cudaStreamWaitEvent(stream(which), static_cast<cudaEvent_t>(fence), 0), "waiting for a fence on a stream");
+}
+void hostWaitForFence(void* fence) { check(cudaEventSynchronize(static_cast<cudaEvent_t>(fence)), "waiting for a fence"); }
+void copyAsync(void* dst, const void* src, std::size_t bytes, int kind, int which) {
+  cudaMemcpyKind k = kind == 0 ? cudaMemcpyHostToDevice : kind == 1 ? cudaMemcpyDeviceToHost : cudaMemcpyDeviceToDevice;
+  check(cudaMemcpyAsync(dst, src, bytes, k, stream(which)), "asynchronous memory copy");
+}
+
 void* createMark() {
   cudaEvent_t e = nullptr;
   check(cudaEventCreate(&e), "creating a timing event");

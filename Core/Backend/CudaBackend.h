@@ -28,6 +28,23 @@ void exclusiveScanAsync(const int* in, int* out, int n);
 // Stable sort of (key, value) pairs by the low `keyBits` bits of key.
 void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits);
 
+// Page-locked host memory: copies from the device into it run
+// asynchronously and at full bus speed.
+void* allocatePinned(std::size_t bytes);
+void releasePinned(void* p) noexcept;
+// Fences on a stream (CUDA events without timing). Stream 0 is the compute
+// stream, where all of a step's work runs; stream 1 is the copy stream, which
+// runs beside it (DownloadQueue.h).
+void* createFence();
+void destroyFence(void* fence) noexcept;
+void recordFence(void* fence, int stream);
+// `stream` waits for the fence; the host does not.
+void streamWaitForFence(int stream, void* fence);
+// The host waits for the fence.
+void hostWaitForFence(void* fence);
+// A copy queued on `stream` (kind as for copy); the host does not wait.
+void copyAsync(void* dst, const void* src, std::size_t bytes, int kind, int stream);
+
 // Timing marks on the device's queue (CUDA events), for DeviceMarks.
 void* createMark();
 void destroyMark(void* mark) noexcept;

@@ -27,6 +27,14 @@ float reduceMin(const float*, int) { refuse(); }
 int exclusiveScan(const int*, int*, int) { refuse(); }
 void exclusiveScanAsync(const int*, int*, int) { refuse(); }
 void sortPairs(std::uint32_t*, std::uint32_t*, int, int) { refuse(); }
+void* allocatePinned(std::size_t) { refuse(); }
+void releasePinned(void*) noexcept {}
+void* createFence() { refuse(); }
+void destroyFence(void*) noexcept {}
+void recordFence(void*, int) { refuse(); }
+void streamWaitForFence(int, void*) { refuse(); }
+void hostWaitForFence(void*) { refuse(); }
+void copyAsync(void*, const void*, std::size_t, int, int) { refuse(); }
 void* createMark() { refuse(); }
 void destroyMark(void*) noexcept {}
 void recordMark(void*) { refuse(); }

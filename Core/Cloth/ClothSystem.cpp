@@ -385,11 +385,29 @@ float ClothSystem::maxStretch(ParticleView p) {
   return reduceMax(device_, strain, c.edgeCount);
 }
 
-std::vector<ClothStrain> ClothSystem::strain(const std::vector<Float4>& position, const std::vector<int>& id,
-                                             const std::vector<int>& phase) const {
+std::vector<int> ClothSystem::hostSlots(const std::vector<int>& id, const std::vector<int>& phase) const {
   std::vector<int> slot(restPosition_.size(), -1);
   for (std::size_t i = 0; i < phase.size(); ++i)
     if (isCloth(phase[i]) && id[i] >= 0 && std::size_t(id[i]) < slot.size()) slot[std::size_t(id[i])] = int(i);
+  return slot;
+}
+
+float ClothSystem::maxStretch(const std::vector<Float4>& position, const std::vector<int>& id,
+                              const std::vector<int>& phase) const {
+  const std::vector<int> slot = hostSlots(id, phase);
+  float worst = 0.f;
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    const int a = slot[std::size_t(edges_[e].a)], b = slot[std::size_t(edges_[e].b)];
+    if (a < 0 || b < 0) continue;
+    const float rest = edgeRest_[e];
+    worst = std::max(worst, std::fabs(length(position[std::size_t(a)].xyz() - position[std::size_t(b)].xyz()) - rest) / rest);
+  }
+  return worst;
+}
+
+std::vector<ClothStrain> ClothSystem::strain(const std::vector<Float4>& position, const std::vector<int>& id,
+                                             const std::vector<int>& phase) const {
+  const std::vector<int> slot = hostSlots(id, phase);
   std::vector<ClothStrain> out;
   std::vector<double> strains;
   for (const ClothObject& obj : objects_) {

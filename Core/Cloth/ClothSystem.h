@@ -191,8 +191,12 @@ class ClothSystem {
   GridView grid() const { return clothGrid_; }
   // Zeroes the XPBD multipliers (start of each step).
   void resetMultipliers();
-  // Largest relative edge strain |l - l0| / l0 over all edges.
+  // Largest relative edge strain |l - l0| / l0 over all edges (a reduction:
+  // the host waits).
   float maxStretch(ParticleView p);
+  // The same from host copies of the particles' positions, ids and phases.
+  float maxStretch(const std::vector<Float4>& position, const std::vector<int>& id,
+                   const std::vector<int>& phase) const;
   // Strain of each cloth (ClothStrain) from host copies of the particles'
   // positions, ids and phases.
   std::vector<ClothStrain> strain(const std::vector<Float4>& position, const std::vector<int>& id,
@@ -230,6 +234,8 @@ class ClothSystem {
   std::vector<float> thickness_;
   std::vector<int> tetherPin_;
   std::vector<float> tetherLength_;
+  // Slot of each cloth vertex in host copies of ids and phases (-1: absent).
+  std::vector<int> hostSlots(const std::vector<int>& id, const std::vector<int>& phase) const;
   std::vector<unsigned char> edgeMeasured_;  // per edge (creation order): counted in strain()
   std::vector<unsigned char> jacobi_;         // per vertex: solved by the Jacobi solve
   std::vector<float> edgeWeight_;  // per edge: chebyshev stiffness

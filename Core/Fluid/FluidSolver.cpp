@@ -327,11 +327,9 @@ void FluidSolver::applyViscosity(Simulation& sim) {
   forEach(device_, p.count, SOAK_LAMBDA(int i) { p.velocity[i] = vnew[i].xyz(); }, "fluid.velocity");
 }
 
-void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
+const float* FluidSolver::compressionPerParticle(Simulation& sim) {
   ParticleView p = sim.particles.view();
-  mean = 0.0;
-  max = 0.f;
-  if (p.count == 0) return;
+  if (p.count == 0) return nullptr;
   resize(p.count);
   GridView g = sim.grid.view();
   const float rho0 = sim.water.restDensity;
@@ -361,9 +359,18 @@ void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
     }
     err[i] = maxf(dens / rho0 - 1.f, 0.f);
   }, "fluid.error");
-  max = maxf(reduceMax(device_, err, p.count), 0.f);
-  const double sum = reduceSum(device_, err, p.count);
-  const double water = reduceSum(device_, isWaterFlag, p.count);
+  return err;
+}
+
+void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
+  mean = 0.0;
+  max = 0.f;
+  const int n = sim.particles.count();
+  const float* err = compressionPerParticle(sim);
+  if (!err) return;
+  max = maxf(reduceMax(device_, err, n), 0.f);
+  const double sum = reduceSum(device_, err, n);
+  const double water = reduceSum(device_, lambda_.data(), n);
   mean = water > 0.0 ? sum / water : 0.0;
 }
 

@@ -34,12 +34,19 @@ class FluidSolver {
   // XSPH viscosity and vorticity confinement on the new velocities.
   void applyViscosity(Simulation& sim);
   // Relative compression max(0, rho/rho0 - 1) of water particles at the
-  // current positions: mean and max.
+  // current positions: mean and max (reductions: the host waits).
   void densityError(Simulation& sim, double& mean, float& max);
+  // The same per slot (0 for other particles), in device scratch that stays
+  // valid until the solver's next call; queued, nothing waits. Null without
+  // particles.
+  const float* compressionPerParticle(Simulation& sim);
 
   const float* boundaryVolume() const { return volume_.data(); }
   // Density of each slot from the last solver iteration (kg/m^3).
   std::vector<float> downloadDensity(int count) const;
+  // The same in device memory: densitySlots() slots (at most the particle count).
+  const float* density() const { return density_.data(); }
+  std::size_t densitySlots() const { return density_.size(); }
   float restDenominator() const { return restDenominator_; }
 
  private:

@@ -52,6 +52,8 @@ FrameWriter::~FrameWriter() {
   }
   changed_.notify_all();
   for (std::thread& t : threads_) t.join();  // each drains the queue before it ends
+  queue_.clear();
+  downloads_.reset();
 }
 
 namespace {
@@ -101,33 +103,24 @@ void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
     ~AddTime() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
   } addTime{captureSeconds_, start};
   if (!haveLayout_) captureLayout(sim);
-  // On the stepping thread: copies of the arrays and the stats row only.
+  if (!downloads_) {
+    sim_ = &sim;
+    downloads_ = std::make_unique<DownloadQueue>(sim.device());
+    writerThreads_ = writerThreadsFor(settings_, sim.device());
+  }
   auto c = std::make_unique<Capture>();
-  const ParticleState& ps = sim.particles;
   c->frame = frame;
-  c->time = sim.time();
-  Simulation::HostParticles host = sim.downloadParticles();
-  const StatsRow simStats = sim.collectStats(host);
-  c->position = std::move(host.position);
-  c->velocity = std::move(host.velocity);
-  c->mass = std::move(host.mass);
-  c->phase = std::move(host.phase);
-  c->id = std::move(host.id);
-  c->radius = ps.downloadRadii();
-  c->density = sim.fluid.downloadDensity(int(c->phase.size()));
-  if (!clothLayout_.empty())
-    for (int k = 0; k < ps.channelCount(); ++k) c->channels.push_back(ps.downloadChannel(k));
-  c->stats.add("frame", frame);
-  c->stats.add("time", sim.time());
-  c->stats.add("step", double(sim.stepIndex()));
-  for (const auto& col : simStats.values()) c->stats.add(col.first, col.second);
-  c->stats.add("step_ms", stepMs);
+  c->stepMs = stepMs;
 
-  if (settings_.writerThreads == 0) {  // written here, on the stepping thread
-    commit(*c, writeFiles(*c));
+  if (writerThreads_ == 0) {  // written here, on the stepping thread
+    c->copy = startFrameCopy(sim, *downloads_);
+    const Frame f = receive(*c);
+    commit(f, writeFiles(f));
     return;
   }
   {
+    // Room in the queue first: the copies below then take host memory only
+    // for frames the queue holds.
     std::unique_lock<std::mutex> lock(mutex_);
     if (error_) std::rethrow_exception(error_);
     if (captured_ - committed_ >= settings_.queuedFrames) {
@@ -135,11 +128,30 @@ void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
       changed_.wait(lock, [&] { return captured_ - committed_ < settings_.queuedFrames || error_; });
       if (error_) std::rethrow_exception(error_);
     }
+  }
+  // On the stepping thread: the copies are queued, nothing waits for them.
+  c->copy = startFrameCopy(sim, *downloads_);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
     c->sequence = captured_++;
     queue_.push_back(std::move(c));
-    while (int(threads_.size()) < settings_.writerThreads) threads_.emplace_back([this] { writerLoop(); });
+    while (int(threads_.size()) < writerThreads_) threads_.emplace_back([this] { writerLoop(); });
   }
   changed_.notify_all();
+}
+
+// The frame's arrays on the host and its stats row.
+FrameWriter::Frame FrameWriter::receive(Capture& c) const {
+  Frame f;
+  f.frame = c.frame;
+  f.data = finishFrameCopy(std::move(c.copy), *downloads_);
+  f.stats.add("frame", c.frame);
+  f.stats.add("time", f.data.time);
+  f.stats.add("step", double(f.data.step));
+  const StatsRow simStats = frameStats(*sim_, f.data);
+  for (const auto& col : simStats.values()) f.stats.add(col.first, col.second);
+  f.stats.add("step_ms", c.stepMs);
+  return f;
 }
 
 void FrameWriter::flush() {
@@ -165,9 +177,11 @@ void FrameWriter::writerLoop() {
       failed = bool(error_);
     }
     Written files;
+    Frame f;
     if (!failed) {
       try {
-        files = writeFiles(*c);
+        f = receive(*c);
+        files = writeFiles(f);
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex_);
         if (!error_) error_ = std::current_exception();
@@ -182,7 +196,7 @@ void FrameWriter::writerLoop() {
     // Only this thread's frame is next: the commit needs no lock.
     if (!failed) {
       try {
-        commit(*c, files);
+        commit(f, files);
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex_);
         if (!error_) error_ = std::current_exception();
@@ -197,7 +211,8 @@ void FrameWriter::writerLoop() {
 }
 
 // The frame's files, each written under a temporary name and renamed.
-FrameWriter::Written FrameWriter::writeFiles(const Capture& c) const {
+FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
+  const FrameData& c = f.data;
   Written w;
   if (testDelaySeconds_ > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(testDelaySeconds_));
   // Water: sorted by id so frames list particles in a stable order.
@@ -216,14 +231,14 @@ FrameWriter::Written FrameWriter::writeFiles(const Capture& c) const {
     ids.values.push_back(static_cast<float>(c.id[i]));
     rho.values.push_back(c.density[i]);
   }
-  w.water = "water/" + frameName("water", c.frame, "vtu");
+  w.water = "water/" + frameName("water", f.frame, "vtu");
   writeParticlesVtu(dir_ + "/" + w.water, points, {v, m, r, ids, rho}, settings_.compression);
   if (surfaceOn_) {
     WaterSurfaceSettings settings;
     settings.cellSize = surfaceCellSize_;
     settings.iso = surfaceIso_;
     vtkSmartPointer<vtkPolyData> surface = buildWaterSurface(points, m.values, r.values, restDensity_, settings);
-    w.surface = "water_surface/" + frameName("water_surface", c.frame, "vtp");
+    w.surface = "water_surface/" + frameName("water_surface", f.frame, "vtp");
     writePolyDataVtp(dir_ + "/" + w.surface, surface, settings_.compression);
   }
   for (const ClothLayout& obj : clothLayout_) {
@@ -240,18 +255,19 @@ FrameWriter::Written FrameWriter::writeFiles(const Capture& c) const {
       data[0].values[3 * local + 2] = c.velocity[i].z;
       for (std::size_t k = 0; k < channelNames_.size(); ++k) data[k + 1].values[local] = c.channels[k][i];
     }
-    w.cloth.push_back(obj.collection + "/" + frameName(obj.collection, c.frame, "vtp"));
+    w.cloth.push_back(obj.collection + "/" + frameName(obj.collection, f.frame, "vtp"));
     writeMeshVtp(dir_ + "/" + w.cloth.back(), clothPoints, obj.triangles, data, settings_.compression);
   }
   return w;
 }
 
 // Lists the frame, once all its files are on disk.
-void FrameWriter::commit(const Capture& c, const Written& files) {
-  water_.add(c.time, files.water);
-  if (surfaceOn_) surface_->add(c.time, files.surface);
-  for (std::size_t k = 0; k < files.cloth.size(); ++k) cloth_[k]->add(c.time, files.cloth[k]);
-  writeStatsRow(c.stats);
+void FrameWriter::commit(const Frame& f, const Written& files) {
+  const double time = f.data.time;
+  water_.add(time, files.water);
+  if (surfaceOn_) surface_->add(time, files.surface);
+  for (std::size_t k = 0; k < files.cloth.size(); ++k) cloth_[k]->add(time, files.cloth[k]);
+  writeStatsRow(f.stats);
   ++frames_;
 }
 

@@ -17,6 +17,7 @@
 #include "Output/PvdCollection.h"
 #include "Output/VtkFiles.h"
 #include "Registry/Module.h"
+#include "Simulation/FrameCopy.h"
 
 namespace soak {
 
@@ -31,12 +32,15 @@ class StateReader;
 //   OUT/stats.csv                                 one row per frame
 //   OUT/scene.xml                                 the scene as run
 //
-// Off the stepping thread: writeFrame() only copies the frame's particle
-// arrays and its stats row from the simulation and queues them; background
-// writer threads build and compress the files, and commit the frames in
-// order (each .pvd and stats.csv gain a frame only once all its files are
-// on disk). A step waits only when OutputSettings::queuedFrames frames are
-// queued (the disk cannot keep up), which waitedForDisk() then reports.
+// Off the stepping thread: writeFrame() only queues copies of the frame's
+// arrays to the host (FrameCopy.h; on the GPU the device copies them while
+// the next steps run); background writer threads wait for the copies,
+// compute the stats row, build and compress the files, and commit the
+// frames in order (each .pvd and stats.csv gain a frame only once all its
+// files are on disk). A step waits only when OutputSettings::queuedFrames
+// frames are queued (the disk cannot keep up), which waitedForDisk() then
+// reports. The simulation must outlive the writer (its stats read the
+// simulation's setup), as it does when declared before it.
 class FrameWriter {
  public:
   // Fresh: creates the folder (InputError if it cannot be written), writes
@@ -60,8 +64,8 @@ class FrameWriter {
   int framesWritten() const { return frames_.load(); }
   // Whether some step had to wait for a frame to be written.
   bool waitedForDisk() const { return waitedForDisk_.load(); }
-  // Seconds the stepping thread spent in writeFrame (copies, stats, and any
-  // wait for a full queue), over all frames.
+  // Seconds the stepping thread spent in writeFrame (queueing the copies,
+  // and any wait for a full queue), over all frames.
   double captureSeconds() const { return captureSeconds_; }
   // Tests: each writer thread sleeps this long before writing a frame (a
   // slow disk on purpose).
@@ -96,16 +100,17 @@ class FrameWriter {
     int phase = 0, firstVertex = 0, vertexCount = 0;
     std::vector<std::array<int, 3>> triangles;
   };
-  // A frame as captured on the stepping thread.
+  // A frame as captured on the stepping thread: its copies queued.
   struct Capture {
     long long sequence = 0;
     int frame = 0;
-    double time = 0.0;
-    std::vector<Float4> position;
-    std::vector<Vec3> velocity;
-    std::vector<float> mass, radius, density;
-    std::vector<int> phase, id;
-    std::vector<std::vector<float>> channels;
+    double stepMs = 0.0;
+    FrameCopy copy;
+  };
+  // A frame on the host, with its stats.csv row (on a writer thread).
+  struct Frame {
+    int frame = 0;
+    FrameData data;
     StatsRow stats;
   };
   // A frame's files written; what its commit adds to the .pvd files.
@@ -114,8 +119,9 @@ class FrameWriter {
     std::vector<std::string> cloth;
   };
   void captureLayout(Simulation& sim);
-  Written writeFiles(const Capture& c) const;
-  void commit(const Capture& c, const Written& files);
+  Frame receive(Capture& c) const;
+  Written writeFiles(const Frame& f) const;
+  void commit(const Frame& f, const Written& files);
   void writerLoop();
   void writeStatsRow(const StatsRow& row);
 
@@ -135,6 +141,12 @@ class FrameWriter {
   bool surfaceOn_ = false;
   float surfaceCellSize_ = 0.f, surfaceIso_ = 0.5f;
   float restDensity_ = 1000.f;
+
+  // Set by the first writeFrame: the simulation whose frames these are
+  // (frameStats reads its setup) and the queue of its copies to the host.
+  const Simulation* sim_ = nullptr;
+  std::unique_ptr<DownloadQueue> downloads_;
+  int writerThreads_ = 0;  // writerThreadsFor(settings_, the simulation's device)
 
   // The queue and its writer threads.
   std::mutex mutex_;

@@ -3,6 +3,9 @@
 #include <utility>
 #include <vector>
 
+#include "Backend/DownloadQueue.h"
+#include "Simulation/FrameData.h"
+
 namespace soak {
 
 class Simulation;
@@ -39,8 +42,14 @@ class Module {
   virtual void setup(Simulation&) {}
   // Third pass: add stages relative to the named anchors of the step.
   virtual void addStages(Pipeline&, Simulation&) {}
-  // Called once per output frame.
-  virtual void addStats(Simulation&, StatsRow&) {}
+  // Stats columns of an output frame. Runs on a frame writer thread while
+  // the simulation steps on, so it reads only `frame` (the frame's host
+  // copies; frame.modules[its index] holds what statsSources named) and
+  // what setup fixed, never the simulation's live state.
+  virtual void addStats(const FrameData& /*frame*/, const FrameData::ModuleCopies& /*own*/, StatsRow&) const {}
+  // Device memory the stats read besides the particle arrays and channels
+  // (counters, say), copied with every frame. Called on the stepping thread.
+  virtual std::vector<DownloadQueue::Part> statsSources(Simulation&) { return {}; }
   // Called before every step (host side, e.g. to move a scripted collider).
   virtual void beforeStep(Simulation&) {}
   // Emitters: how many particles they would add from now to `endTime` (s),

@@ -358,9 +358,10 @@ void registerCoreElements(ModuleRegistry& r) {
                     "Output")
             .choice("compression", {"lz4", "zlib", "lzma", "none"}, "lz4",
                     "Compressor of the .vtu/.vtp files (Doc/output.md measures MB and ms per frame of each).")
-            .integer("writerThreads", "8",
-                     "Threads that build and write frame files in the background (0: on the stepping thread).", 0,
-                     64)
+            .integer("writerThreads", "-1",
+                     "Threads that build and write frame files in the background; 0 writes them on the stepping "
+                     "thread; -1 chooses: 8 when the simulation runs on the GPU, 1 on the CPU (Doc/output.md).",
+                     -1, 64)
             .integer("queuedFrames", "8",
                      "Frames captured and not yet written before a step waits for the disk.", 1, 1000)
             .makeUnique()

@@ -1,4 +1,5 @@
 #include "Simulation/Simulation.h"
+#include "Simulation/FrameCopy.h"
 
 #include <algorithm>
 
@@ -195,65 +196,9 @@ bool Simulation::maintenanceStep() const {
   return maintenanceInterval <= 1 || stepIndex_ % maintenanceInterval == 0;
 }
 
-Simulation::HostParticles Simulation::downloadParticles() const {
-  HostParticles h;
-  h.position = particles.downloadPositions();
-  h.velocity = particles.downloadVelocities();
-  h.mass = particles.downloadMasses();
-  h.phase = particles.downloadPhases();
-  h.id = particles.downloadIds();
-  return h;
-}
-
-StatsRow Simulation::collectStats() { return collectStats(downloadParticles()); }
-
-StatsRow Simulation::collectStats(const HostParticles& host) {
-  StatsRow row;
-  const std::vector<int>& phase = host.phase;
-  const std::vector<float>& mass = host.mass;
-  long long water = 0, clothCount = 0;
-  double waterMass = 0.0, pendingDrained = 0.0;
-  for (std::size_t i = 0; i < phase.size(); ++i) {
-    if (isRemoved(phase[i])) {
-      pendingDrained += mass[i];
-    } else if (isWater(phase[i])) {
-      ++water;
-      waterMass += mass[i];
-    } else if (isCloth(phase[i])) {
-      ++clothCount;
-    }
-  }
-  const std::vector<Vec3>& velocity = host.velocity;
-  float maxSpeed = 0.f;
-  double kinetic = 0.0;
-  for (std::size_t i = 0; i < velocity.size(); ++i) {
-    maxSpeed = std::max(maxSpeed, length(velocity[i]));
-    kinetic += 0.5 * double(mass[i]) * double(lengthSquared(velocity[i]));
-  }
-  row.add("water_particles", double(water));
-  row.add("cloth_particles", double(clothCount));
-  row.add("free_water_mass", waterMass);
-  row.add("drained_water_mass", drainedWaterMass + pendingDrained);
-  row.add("emitted_water_mass", emittedWaterMass);
-  double meanError = 0.0;
-  float maxError = 0.f;
-  if (stepIndex_ > 0) fluid.densityError(*this, meanError, maxError);
-  row.add("mean_density_error", meanError);
-  row.add("max_density_error", maxError);
-  row.add("max_speed", maxSpeed);
-  row.add("kinetic_energy", kinetic);
-  row.add("max_stretch", cloth.empty() ? 0.0 : double(cloth.maxStretch(particles.view())));
-  if (!cloth.empty()) {
-    // Edge strain per cloth (ClothSystem::strain): warp and weft edges of a sheet, all edges of a mesh.
-    const std::vector<ClothStrain> strain =
-        cloth.strain(host.position, host.id, phase);
-    for (std::size_t k = 0; k < strain.size(); ++k) {
-      row.add("strain_mean_" + cloth.objects()[k].name, strain[k].mean);
-      row.add("strain_p99_" + cloth.objects()[k].name, strain[k].p99);
-    }
-  }
-  for (auto& m : modules_) m->addStats(*this, row);
-  return row;
+StatsRow Simulation::collectStats() {
+  if (!statsDownloads_) statsDownloads_ = std::make_unique<DownloadQueue>(device_);
+  return frameStats(*this, finishFrameCopy(startFrameCopy(*this, *statsDownloads_), *statsDownloads_));
 }
 
 }  // namespace soak

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "Backend/Buffer.h"
+#include "Backend/DownloadQueue.h"
 #include "Cloth/ClothSystem.h"
 #include "Fluid/FluidSolver.h"
 #include "Neighbours/NeighbourGrid.h"
@@ -58,18 +59,11 @@ class Simulation {
   // particles' order otherwise): the drain stage does it on maintenance steps.
   void compact();
 
-  // Counts and water budget for stats.csv (one reduction per call).
+  // The stats.csv row of the current state (FrameCopy.h's frameStats, from
+  // a copy the host waits for).
   StatsRow collectStats();
-  // The same from host copies of the particle arrays already made (the
-  // frame writer copies them for the frame anyway).
-  struct HostParticles {
-    std::vector<Float4> position;
-    std::vector<Vec3> velocity;
-    std::vector<float> mass;
-    std::vector<int> phase, id;
-  };
-  HostParticles downloadParticles() const;
-  StatsRow collectStats(const HostParticles& host);
+  // The modules made from the scene, in scene order.
+  const std::vector<std::unique_ptr<Module>>& modules() const { return modules_; }
 
   // Checkpoints: step counter, water budget, particles and every module's
   // state. loadState expects a simulation built from the same scene
@@ -163,6 +157,7 @@ class Simulation {
   Buffer<float> removedMass_;
   Buffer<Vec3> sinkBuffer_;
   std::vector<std::unique_ptr<Module>> modules_;
+  std::unique_ptr<DownloadQueue> statsDownloads_;  // collectStats()
   Buffer<Collider> colliderBuffer_;
   bool collidersDirty_ = true;
   long long stepIndex_ = 0;

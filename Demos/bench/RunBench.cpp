@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "Base/Error.h"
+#include "Base/MessageText.h"
 #include "Output/FrameWriter.h"
 #include "Simulation/LoadedScene.h"
 #include "Simulation/Runner.h"
@@ -106,9 +107,9 @@ int main(int argc, char** argv) {
     }
     if (scene.empty()) throw InputError("usage: soak-run-bench SCENE [--device D] [--time T] [--configs lz4,...]");
     const Device device = resolveDevice(deviceName);
-    std::printf("soak-run-bench: %s on %s%s, %s s simulated\n", scene.c_str(), soak::deviceName(device),
+    std::printf("soak-run-bench: %s on %s%s, %s simulated\n", scene.c_str(), soak::deviceName(device),
                 device == Device::Cuda ? (" (" + cudaDeviceDescription() + ")").c_str() : "",
-                time >= 0 ? std::to_string(time).c_str() : "the scene's");
+                time >= 0 ? (formatNumber(time) + " s").c_str() : "the scene's duration");
     const Timing bare = timeRun(scene, device, time, overrides, "");
     std::printf("no output: %.3f s wall, %lld steps\n\n", bare.seconds, bare.steps);
     std::printf("| output | frames | wall s | / no output | / 1 fps | MB | MB/s | ms a frame on the stepping thread |\n"

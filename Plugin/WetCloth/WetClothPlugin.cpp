@@ -128,17 +128,27 @@ class WetClothModule : public Module {
     dripCounters_.upload({c});
   }
 
-  void addStats(Simulation& sim, StatsRow& row) override {
-    const int n = sim.particles.count();
-    const double held = reduceSum(sim.device(), sim.particles.channel(held_), n);
-    const DripCounters drips = counters();
-    const double buffered =
-        reduceSum(sim.device(), sim.particles.channel(buffer_), n) + double(drips.pending) * double(w_.mThreshold);
-    const double free = row.get("free_water_mass");
-    row.add("held_water_mass", held);
+  std::vector<DownloadQueue::Part> statsSources(Simulation&) override {
+    return {{dripCounters_.data(), sizeof(DripCounters)}};
+  }
+
+  // From the frame's copies (a writer thread): the channel indices and
+  // m_threshold are fixed at setup.
+  void addStats(const FrameData& frame, const FrameData::ModuleCopies& own, StatsRow& row) const override {
+    const std::vector<float>& held = frame.channels.at(std::size_t(held_));
+    const std::vector<float>& buffer = frame.channels.at(std::size_t(buffer_));
+    const std::vector<float>& saturation = frame.channels.at(std::size_t(saturation_));
+    const DripCounters drips = own.as<DripCounters>(0);
+    double heldSum = 0.0, bufferSum = 0.0;
+    for (float v : held) heldSum += v;
+    for (float v : buffer) bufferSum += v;
+    float maxSaturation = 0.f;
+    for (float v : saturation) maxSaturation = std::max(maxSaturation, v);
+    const double buffered = bufferSum + double(drips.pending) * double(w_.mThreshold);
+    row.add("held_water_mass", heldSum);
     row.add("buffered_water_mass", buffered);
-    row.add("total_water_mass", free + held + buffered + row.get("drained_water_mass"));
-    row.add("max_saturation", n > 0 ? std::max(0.f, reduceMax(sim.device(), sim.particles.channel(saturation_), n)) : 0.0);
+    row.add("total_water_mass", row.get("free_water_mass") + heldSum + buffered + row.get("drained_water_mass"));
+    row.add("max_saturation", maxSaturation);
     row.add("drips_spawned", double(drips.spawned));
     row.add("drips_deferred", double(drips.deferred));
   }
