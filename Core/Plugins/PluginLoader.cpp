@@ -85,6 +85,19 @@ void PluginLoader::loadDirectory(const std::string& dir) {
 }
 
 std::string defaultPluginDirectory() {
+  // Beside the core library: lib/libsoak_core.so and lib/soak-plugins, in
+  // the build tree and in a bundle alike, whatever program loaded the core
+  // (soak, a test, or Python for the soak module).
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&defaultPluginDirectory), &info) != 0 && info.dli_fname) {
+    const std::string lib(info.dli_fname);
+    const std::size_t slash = lib.find_last_of('/');
+    struct stat st {};
+    if (slash != std::string::npos) {
+      const std::string dir = lib.substr(0, slash) + "/soak-plugins";
+      if (::stat(dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return dir;
+    }
+  }
   char buf[PATH_MAX];
   ssize_t len = readlink("/proc/self/exe", buf, sizeof(buf) - 1);
   if (len <= 0) return "lib/soak-plugins";

@@ -33,7 +33,8 @@ class PluginLoader {
   std::vector<void*> handles_;
 };
 
-// The plugin directory of the running program: <exe dir>/../lib/soak-plugins.
+// The standard plugin directory: soak-plugins beside the core library
+// (lib/soak-plugins), else <exe dir>/../lib/soak-plugins.
 std::string defaultPluginDirectory();
 
 }  // namespace soak

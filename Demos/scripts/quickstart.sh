@@ -6,6 +6,7 @@ cd "$(dirname "$0")/../.."
 bash Demos/scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
+bash Demos/scripts/install-python-module.sh build/release
 scene=${SOAK_SCENE:-Scenes/fig1_jet.xml}
 out=soak-out/default
 build/release/bin/soak run "$scene" -o "$out" "$@"
