@@ -17,7 +17,13 @@ DownloadQueue::Transfer::Transfer(Device d) : device_(d) {
 
 DownloadQueue::Transfer::~Transfer() {
   if (device_ == Device::Cuda) {
-    if (!waited_) cuda::hostWaitForFence(done_);
+    // The copy may still be writing into host_. A failed wait means the
+    // device has failed already, which the step reports; a destructor
+    // cannot throw.
+    try {
+      if (!waited_) cuda::hostWaitForFence(done_);
+    } catch (...) {
+    }
     cuda::releasePinned(host_);
     cuda::destroyFence(done_);
   } else {
@@ -98,8 +104,8 @@ std::unique_ptr<DownloadQueue::Transfer> DownloadQueue::download(const std::vect
     t->waited_ = true;
     return t;
   }
-  // The previous download's copy out of the staging block comes first
-  // (also before the block is resized and the old one freed).
+  // The previous download's copy out of the staging block must be done
+  // before the block is written, resized or freed.
   cuda::streamWaitForFence(0, copiedOut_);
   staging_.resize(total);
   for (std::size_t k = 0; k < parts.size(); ++k) {

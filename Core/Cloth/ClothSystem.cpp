@@ -385,16 +385,14 @@ float ClothSystem::maxStretch(ParticleView p) {
   return reduceMax(device_, strain, c.edgeCount);
 }
 
-std::vector<int> ClothSystem::hostSlots(const std::vector<int>& id, const std::vector<int>& phase) const {
+std::vector<int> ClothSystem::vertexSlots(const std::vector<int>& id, const std::vector<int>& phase) const {
   std::vector<int> slot(restPosition_.size(), -1);
   for (std::size_t i = 0; i < phase.size(); ++i)
     if (isCloth(phase[i]) && id[i] >= 0 && std::size_t(id[i]) < slot.size()) slot[std::size_t(id[i])] = int(i);
   return slot;
 }
 
-float ClothSystem::maxStretch(const std::vector<Float4>& position, const std::vector<int>& id,
-                              const std::vector<int>& phase) const {
-  const std::vector<int> slot = hostSlots(id, phase);
+float ClothSystem::maxStretch(const std::vector<Float4>& position, const std::vector<int>& slot) const {
   float worst = 0.f;
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     const int a = slot[std::size_t(edges_[e].a)], b = slot[std::size_t(edges_[e].b)];
@@ -405,9 +403,7 @@ float ClothSystem::maxStretch(const std::vector<Float4>& position, const std::ve
   return worst;
 }
 
-std::vector<ClothStrain> ClothSystem::strain(const std::vector<Float4>& position, const std::vector<int>& id,
-                                             const std::vector<int>& phase) const {
-  const std::vector<int> slot = hostSlots(id, phase);
+std::vector<ClothStrain> ClothSystem::strain(const std::vector<Float4>& position, const std::vector<int>& slot) const {
   std::vector<ClothStrain> out;
   std::vector<double> strains;
   for (const ClothObject& obj : objects_) {

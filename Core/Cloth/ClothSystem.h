@@ -194,13 +194,14 @@ class ClothSystem {
   // Largest relative edge strain |l - l0| / l0 over all edges (a reduction:
   // the host waits).
   float maxStretch(ParticleView p);
-  // The same from host copies of the particles' positions, ids and phases.
-  float maxStretch(const std::vector<Float4>& position, const std::vector<int>& id,
-                   const std::vector<int>& phase) const;
-  // Strain of each cloth (ClothStrain) from host copies of the particles'
-  // positions, ids and phases.
-  std::vector<ClothStrain> strain(const std::vector<Float4>& position, const std::vector<int>& id,
-                                  const std::vector<int>& phase) const;
+  // Slot of each cloth vertex (global vertex index) in host copies of the
+  // particles' ids and phases; -1 where a vertex is absent.
+  std::vector<int> vertexSlots(const std::vector<int>& id, const std::vector<int>& phase) const;
+  // The same maximum from host copies of the positions, with vertexSlots.
+  float maxStretch(const std::vector<Float4>& position, const std::vector<int>& slots) const;
+  // Strain of each cloth (ClothStrain) from host copies of the positions,
+  // with vertexSlots.
+  std::vector<ClothStrain> strain(const std::vector<Float4>& position, const std::vector<int>& slots) const;
   // Whether some cloth uses the PBD/XPBD constraints, or the Jacobi solve.
   bool anyColouredConstraints() const { return stretchColours() > 0 || bendColours() > 0 || anyTethers_; }
   bool anyJacobi() const { return !jacobiVertices_.empty(); }
@@ -234,8 +235,6 @@ class ClothSystem {
   std::vector<float> thickness_;
   std::vector<int> tetherPin_;
   std::vector<float> tetherLength_;
-  // Slot of each cloth vertex in host copies of ids and phases (-1: absent).
-  std::vector<int> hostSlots(const std::vector<int>& id, const std::vector<int>& phase) const;
   std::vector<unsigned char> edgeMeasured_;  // per edge (creation order): counted in strain()
   std::vector<unsigned char> jacobi_;         // per vertex: solved by the Jacobi solve
   std::vector<float> edgeWeight_;  // per edge: chebyshev stiffness

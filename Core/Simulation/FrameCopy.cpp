@@ -115,10 +115,13 @@ StatsRow frameStats(const Simulation& sim, const FrameData& frame) {
   row.add("max_speed", maxSpeed);
   row.add("kinetic_energy", kinetic);
   const ClothSystem& cloth = sim.cloth;
-  row.add("max_stretch", cloth.empty() ? 0.0 : double(cloth.maxStretch(frame.position, frame.id, frame.phase)));
-  if (!cloth.empty()) {
+  if (cloth.empty()) {
+    row.add("max_stretch", 0.0);
+  } else {
+    const std::vector<int> slots = cloth.vertexSlots(frame.id, frame.phase);
+    row.add("max_stretch", double(cloth.maxStretch(frame.position, slots)));
     // Edge strain per cloth (ClothSystem::strain): warp and weft edges of a sheet, all edges of a mesh.
-    const std::vector<ClothStrain> strain = cloth.strain(frame.position, frame.id, frame.phase);
+    const std::vector<ClothStrain> strain = cloth.strain(frame.position, slots);
     for (std::size_t k = 0; k < strain.size(); ++k) {
       row.add("strain_mean_" + cloth.objects()[k].name, strain[k].mean);
       row.add("strain_p99_" + cloth.objects()[k].name, strain[k].p99);

@@ -226,7 +226,8 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
   if (!sim.cloth.empty()) {
     r.clothPhases = sim.cloth.constraintPhasesPerStep(sim.settings.clothIterations, sim.settings.clothSubsteps);
     const ParticleState& ps = sim.particles;
-    for (const ClothStrain& s : sim.cloth.strain(ps.downloadPositions(), ps.downloadIds(), ps.downloadPhases())) {
+    const std::vector<int> slots = sim.cloth.vertexSlots(ps.downloadIds(), ps.downloadPhases());
+    for (const ClothStrain& s : sim.cloth.strain(ps.downloadPositions(), slots)) {
       r.strainMean = std::max(r.strainMean, s.mean);
       r.strainP99 = std::max(r.strainP99, s.p99);
     }

@@ -93,11 +93,8 @@ const ClothObject& findCloth(const Simulation& sim, const std::string& name) {
 
 // Slot of each vertex of `obj`, in vertex order.
 std::vector<int> clothSlots(Simulation& sim, const ClothObject& obj) {
-  const std::vector<int> phase = sim.particles.downloadPhases(), id = sim.particles.downloadIds();
-  std::vector<int> slots(std::size_t(obj.vertexCount), -1);
-  for (std::size_t i = 0; i < phase.size(); ++i)
-    if (phase[i] == obj.phase) slots[std::size_t(id[i] - obj.firstVertex)] = int(i);
-  return slots;
+  const std::vector<int> all = sim.cloth.vertexSlots(sim.particles.downloadIds(), sim.particles.downloadPhases());
+  return std::vector<int>(all.begin() + obj.firstVertex, all.begin() + obj.firstVertex + obj.vertexCount);
 }
 
 template <class T>
