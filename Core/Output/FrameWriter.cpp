@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
+#include "Output/PlyFiles.h"
+#include "Output/VdbFiles.h"
 #include "Output/WaterSurface.h"
 
 #include <sys/stat.h>
@@ -82,12 +85,28 @@ void FrameWriter::captureLayout(Simulation& sim) {
       makeDirectories(dir_ + "/" + l.collection);
       cloth_.push_back(std::make_unique<PvdCollection>(dir_ + "/" + l.collection + ".pvd"));
     }
+    if (settings_.ply) {
+      makeDirectories(dir_ + "/" + l.collection + "_ply");
+      for (std::size_t c = 0; c < channelNames_.size(); ++c)
+        if (channelNames_[c] == settings_.plyColour) l.colourChannel = int(c);
+    }
     clothLayout_.push_back(std::move(l));
   }
   surfaceOn_ = sim.settings.surfaceCellSize > 0.f;
   surfaceCellSize_ = sim.settings.surfaceCellSize;
   surfaceIso_ = sim.settings.surfaceIso;
   restDensity_ = sim.water.restDensity;
+  waterSpacing_ = sim.water.spacing;
+  particleMass_ = sim.water.particleMass;
+  if (settings_.vdb) {
+    // The surface mesh's splat where <WaterSurface> sets one; else a cell of
+    // 0.7 r0 (the paper's), no finer than 1/31 of the support's diameter so
+    // that a particle touches at most 32^3 grid points (WaterSurface's limit).
+    vdbCellSize_ = surfaceOn_ ? surfaceCellSize_
+                                      : std::max(0.7f * sim.water.spacing, 2.f * sim.water.supportRadius / 31.f);
+    vdbIso_ = surfaceOn_ ? surfaceIso_ : 0.5f;
+    makeDirectories(dir_ + "/water_vdb");
+  }
   if (surfaceOn_ && !surface_) {
     makeDirectories(dir_ + "/water_surface");
     surface_ = std::make_unique<PvdCollection>(dir_ + "/water_surface.pvd");
@@ -241,6 +260,29 @@ FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
     w.surface = "water_surface/" + frameName("water_surface", f.frame, "vtp");
     writePolyDataVtp(dir_ + "/" + w.surface, surface, settings_.compression);
   }
+  if (settings_.vdb) {
+    WaterVdbFrame vdb;
+    vdb.position = points;
+    vdb.velocity.resize(water.size());
+    vdb.id.resize(water.size());
+    vdb.pointRadius.resize(water.size());
+    for (std::size_t k = 0; k < water.size(); ++k) {
+      const std::size_t i = water[k];
+      vdb.velocity[k] = c.velocity[i];
+      vdb.id[k] = c.id[i];
+      // Half the spacing for a full particle; a lighter one (a drip's
+      // remainder) draws with the radius of its volume.
+      vdb.pointRadius[k] = 0.5f * waterSpacing_ * std::cbrt(std::max(0.f, c.mass[i] / particleMass_));
+    }
+    vdb.mass = m.values;
+    vdb.supportRadius = r.values;
+    vdb.restDensity = restDensity_;
+    vdb.spacing = waterSpacing_;
+    WaterSurfaceSettings surface;
+    surface.cellSize = vdbCellSize_;
+    surface.iso = vdbIso_;
+    writeWaterVdb(dir_ + "/water_vdb/" + frameName("water", f.frame, "vdb"), vdb, surface);
+  }
   for (const ClothLayout& obj : clothLayout_) {
     std::vector<Vec3> clothPoints(std::size_t(obj.vertexCount));
     std::vector<PointArray> data{{"velocity", 3, std::vector<float>(3 * std::size_t(obj.vertexCount))}};
@@ -257,6 +299,17 @@ FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
     }
     w.cloth.push_back(obj.collection + "/" + frameName(obj.collection, f.frame, "vtp"));
     writeMeshVtp(dir_ + "/" + w.cloth.back(), clothPoints, obj.triangles, data, settings_.compression);
+    if (settings_.ply) {
+      ClothPlyFrame ply;
+      ply.position = std::move(clothPoints);
+      ply.velocity.resize(ply.position.size());
+      for (std::size_t i = 0; i < ply.velocity.size(); ++i)
+        ply.velocity[i] = Vec3(data[0].values[3 * i], data[0].values[3 * i + 1], data[0].values[3 * i + 2]);
+      ply.triangles = obj.triangles;
+      ply.channels.assign(data.begin() + 1, data.end());
+      ply.colourChannel = obj.colourChannel;
+      writeClothPly(dir_ + "/" + obj.collection + "_ply/" + frameName(obj.collection, f.frame, "ply"), ply);
+    }
   }
   return w;
 }

@@ -29,6 +29,8 @@ class StateReader;
 //   OUT/water.pvd + OUT/water/water_NNNNNN.vtu   water particles
 //   OUT/cloth_<name>.pvd + OUT/cloth_<name>/*.vtp  each cloth as a triangle mesh
 //   OUT/water_surface.pvd + OUT/water_surface/*.vtp  with <WaterSurface>
+//   OUT/water_vdb/water_NNNNNN.vdb               with Output.vdb (VdbFiles.h)
+//   OUT/cloth_<name>_ply/*.ply                     with Output.ply (PlyFiles.h)
 //   OUT/stats.csv                                 one row per frame
 //   OUT/scene.xml                                 the scene as run
 //
@@ -97,6 +99,7 @@ class FrameWriter {
   // What does not change during a run, taken from the first frame.
   struct ClothLayout {
     std::string collection;  // "cloth_<name>"
+    int colourChannel = -1;  // index of Output.plyColour among the channels
     int phase = 0, firstVertex = 0, vertexCount = 0;
     std::vector<std::array<int, 3>> triangles;
   };
@@ -141,6 +144,9 @@ class FrameWriter {
   bool surfaceOn_ = false;
   float surfaceCellSize_ = 0.f, surfaceIso_ = 0.5f;
   float restDensity_ = 1000.f;
+  // OpenVDB: the level set's splat, the water spacing and full particle mass.
+  float vdbCellSize_ = 0.014f, vdbIso_ = 0.5f;
+  float waterSpacing_ = 0.02f, particleMass_ = 0.0082f;
 
   // Set by the first writeFrame: the simulation whose frames these are
   // (frameStats reads its setup) and the queue of its copies to the host.

@@ -36,10 +36,11 @@ bool atOrUnder(const std::string& path, const std::string& entry) {
 
 std::vector<std::string> outputEntries(const std::vector<std::string>& clothNames) {
   std::vector<std::string> entries{"scene.xml", "stats.csv", "checkpoint.soak", "water.pvd", "water",
-                                   "water_surface.pvd", "water_surface"};
+                                   "water_surface.pvd", "water_surface", "water_vdb"};
   for (const std::string& name : clothNames) {
     entries.push_back("cloth_" + name + ".pvd");
     entries.push_back("cloth_" + name);
+    entries.push_back("cloth_" + name + "_ply");
   }
   return entries;
 }

@@ -1,8 +1,10 @@
 #pragma once
-// How frames are written (<Output>): the compressor of the VTK files, and the
-// background writers that take frames off the stepping thread
-// (Output/FrameWriter.h). Doc/output.md measures the compressors and the
-// writer threads.
+// How frames are written (<Output>): the compressor of the VTK files, the
+// formats for other tools (OpenVDB, PLY) and the background writers that
+// take frames off the stepping thread (Output/FrameWriter.h). Doc/output.md
+// measures the compressors and the writer threads.
+#include <string>
+
 #include "Backend/Device.h"
 
 namespace soak {
@@ -16,6 +18,9 @@ struct OutputSettings {
   static constexpr int kAutoWriterThreads = -1;
   int writerThreads = kAutoWriterThreads;
   int queuedFrames = 8;   // frames captured and not yet on disk before a step waits
+  bool vdb = false;       // water as OpenVDB (Output/VdbFiles.h), water_vdb/
+  bool ply = false;       // cloth as binary PLY (Output/PlyFiles.h), cloth_<name>_ply/
+  std::string plyColour = "saturation";  // channel the PLY vertex colours show; empty: none
 };
 
 // The writer threads a run gets. Automatic: 8 where the simulation runs on

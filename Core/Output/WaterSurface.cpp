@@ -13,11 +13,10 @@
 
 namespace soak {
 
-vtkSmartPointer<vtkPolyData> buildWaterSurface(const std::vector<Vec3>& x, const std::vector<float>& mass,
-                                               const std::vector<float>& radius, float rho0,
-                                               const WaterSurfaceSettings& s) {
-  auto empty = vtkSmartPointer<vtkPolyData>::New();
-  if (x.empty() || !(s.cellSize > 0.f)) return empty;
+RelativeDensityGrid splatRelativeDensity(const std::vector<Vec3>& x, const std::vector<float>& mass,
+                                         const std::vector<float>& radius, float rho0, const WaterSurfaceSettings& s) {
+  RelativeDensityGrid grid;
+  if (x.empty() || !(s.cellSize > 0.f)) return grid;
   float hMax = 0.f;
   Vec3 lo = x[0], hi = x[0];
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -36,7 +35,13 @@ vtkSmartPointer<vtkPolyData> buildWaterSurface(const std::vector<Vec3>& x, const
   while (cells(cell) > double(s.maxCells)) cell *= 1.25;
   const int nx = int(std::ceil((hi.x - lo.x) / cell)) + 1, ny = int(std::ceil((hi.y - lo.y) / cell)) + 1,
             nz = int(std::ceil((hi.z - lo.z) / cell)) + 1;
-  std::vector<float> field(std::size_t(nx) * ny * nz, 0.f);
+  grid.lo = lo;
+  grid.cell = cell;
+  grid.nx = nx;
+  grid.ny = ny;
+  grid.nz = nz;
+  std::vector<float>& field = grid.values;
+  field.assign(std::size_t(nx) * ny * nz, 0.f);
   const float inv = float(1.0 / cell);
   // Splat particle by particle; z slabs in parallel would race at their
   // borders, so the loop is serial (a few million kernel evaluations).
@@ -56,14 +61,22 @@ vtkSmartPointer<vtkPolyData> buildWaterSurface(const std::vector<Vec3>& x, const
           if (r2 < h * h) field[(std::size_t(k) * ny + j) * nx + ii] += share * poly6(r2, h);
         }
   }
+  return grid;
+}
+
+vtkSmartPointer<vtkPolyData> buildWaterSurface(const std::vector<Vec3>& x, const std::vector<float>& mass,
+                                               const std::vector<float>& radius, float rho0,
+                                               const WaterSurfaceSettings& s) {
+  const RelativeDensityGrid grid = splatRelativeDensity(x, mass, radius, rho0, s);
+  if (grid.values.empty()) return vtkSmartPointer<vtkPolyData>::New();
   auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(nx, ny, nz);
-  image->SetOrigin(lo.x, lo.y, lo.z);
-  image->SetSpacing(cell, cell, cell);
+  image->SetDimensions(grid.nx, grid.ny, grid.nz);
+  image->SetOrigin(grid.lo.x, grid.lo.y, grid.lo.z);
+  image->SetSpacing(grid.cell, grid.cell, grid.cell);
   auto values = vtkSmartPointer<vtkFloatArray>::New();
   values->SetName("relative_density");
-  values->SetNumberOfValues(vtkIdType(field.size()));
-  for (std::size_t n = 0; n < field.size(); ++n) values->SetValue(vtkIdType(n), field[n]);
+  values->SetNumberOfValues(vtkIdType(grid.values.size()));
+  for (std::size_t n = 0; n < grid.values.size(); ++n) values->SetValue(vtkIdType(n), grid.values[n]);
   image->GetPointData()->SetScalars(values);
   auto contour = vtkSmartPointer<vtkFlyingEdges3D>::New();
   contour->SetInputData(image);

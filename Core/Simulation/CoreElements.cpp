@@ -1,4 +1,5 @@
 // The scene elements Core provides, each declared once.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -213,6 +214,30 @@ class OutputModule : public Module {
                                   : Compression::LZ4;
     o.writerThreads = int(p_.integer("writerThreads"));
     o.queuedFrames = int(p_.integer("queuedFrames"));
+    o.vdb = p_.boolean("vdb");
+    o.ply = p_.boolean("ply");
+    o.plyColour = p_.text("plyColour");
+  }
+  // Every module's setup has run: the channels the plugins add exist.
+  void addStages(Pipeline&, Simulation& sim) override {
+    OutputSettings& o = sim.settings.output;
+    if (!o.ply || o.plyColour.empty()) return;
+    const ParticleState& ps = sim.particles;
+    if (!p_.given("plyColour")) {  // the default colours by saturation where the scene has it
+      bool found = false;
+      for (int c = 0; c < ps.channelCount(); ++c) found = found || ps.channelName(c) == o.plyColour;
+      if (!found) o.plyColour.clear();
+      return;
+    }
+    std::vector<std::string> names;
+    for (int c = 0; c < ps.channelCount(); ++c) names.push_back(ps.channelName(c));
+    if (std::find(names.begin(), names.end(), o.plyColour) != names.end()) return;
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw InputError("<Output>: plyColour '" + o.plyColour + "' is not a channel of this scene (" +
+                         (list.empty() ? std::string("it has none") : "its channels: " + list) +
+                         "); name one, or set plyColour=\"\" for no colours",
+                     p_.where());
   }
 
  private:
@@ -353,8 +378,9 @@ void registerCoreElements(ModuleRegistry& r) {
             .makeUnique()
             .create([](const ElementParams&) { return std::make_unique<NoModule>(); }));
   r.add(ElementDecl("Output",
-                    "How frames are written: the compressor of the VTK files and the background threads that "
-                    "write them while the simulation goes on (Doc/output.md).",
+                    "How frames are written: the compressor of the VTK files, OpenVDB and PLY copies for "
+                    "Houdini and Blender, and the background threads that write them while the simulation goes "
+                    "on (Doc/output.md).",
                     "Output")
             .choice("compression", {"lz4", "zlib", "lzma", "none"}, "lz4",
                     "Compressor of the .vtu/.vtp files (Doc/output.md measures MB and ms per frame of each).")
@@ -364,6 +390,16 @@ void registerCoreElements(ModuleRegistry& r) {
                      -1, 64)
             .integer("queuedFrames", "8",
                      "Frames captured and not yet written before a step waits for the disk.", 1, 1000)
+            .boolean("vdb", "false",
+                     "Also write the water as OpenVDB, water_vdb/water_NNNNNN.vdb: a level set \"surface\" (the "
+                     "<WaterSurface> splat and iso; without that element a cell of 0.7 r0 and iso 0.5) and a points "
+                     "grid \"particles\" with v, pscale and id (Doc/output.md: loading in Houdini and Blender).")
+            .boolean("ply", "false",
+                     "Also write each cloth as binary PLY, cloth_<name>_ply/cloth_<name>_NNNNNN.ply, with velocity, "
+                     "every channel and a vertex colour per vertex.")
+            .text("plyColour", "saturation",
+                  "Channel the PLY vertex colours show, white at 0 to deep blue at 1 (empty: no colours; the "
+                  "default colours by saturation where the scene has that channel, and not at all otherwise).")
             .makeUnique()
             .create([](const ElementParams& p) { return std::make_unique<OutputModule>(p); }));
   r.add(ElementDecl("WaterSurface",

@@ -3,15 +3,15 @@
 # Needs root (or sudo). The CUDA toolkit is not a Debian package: if
 # /usr/local/cuda (or nvcc on PATH) is there, the CUDA backend is built too.
 # clang and its runtime are for the sanitizer build and the fuzzers (Doc/reliability.md);
-# pybind11, numpy and pytest for the Python module (Doc/python.md), OpenVDB for
-# the .vdb export (Doc/output.md).
+# pybind11, numpy and pytest for the Python module (Doc/python.md), OpenVDB (whose CMake
+# module also asks for Boost.Iostreams) for the .vdb export (Doc/output.md).
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libpugixml-dev libgtest-dev libtinyobjloader-dev
   paraview-dev python3-paraview
   xvfb python3-matplotlib
-  pybind11-dev python3-pybind11 python3-numpy python3-pytest libopenvdb-dev
+  pybind11-dev python3-pybind11 python3-numpy python3-pytest libopenvdb-dev libboost-iostreams-dev
   clang libclang-rt-14-dev libomp-dev
 )
 missing=()

@@ -145,18 +145,20 @@ TEST(HostileInput, TheOutputFolderMayNotHoldOrReplaceTheInput) {
     EXPECT_EQ(readWholeFile(in + "/scene.xml"), scene) << "the user's scene was replaced";
     EXPECT_FALSE(pathExists(in + "/water.pvd"));
   }
-  // A mesh where the run would write its frames.
-  std::system(("mkdir -p '" + in + "/run/cloth_square'").c_str());
-  writeWholeFile(in + "/run/cloth_square/square.obj", squareObj(1.f));
-  std::string meshInRun = scene;
-  meshInRun.replace(meshInRun.find("mesh=\"square.obj\""), 17, "mesh=\"run/cloth_square/square.obj\"");
-  writeWholeFile(in + "/mesh_in_run.xml", meshInRun);
-  SoakResult r = runSoak("run " + in + "/mesh_in_run.xml -o " + in + "/run --frames 1 --device cpu --quiet");
-  EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_NE(r.output.find("would replace"), std::string::npos) << r.output;
-  EXPECT_FALSE(pathExists(in + "/run/water.pvd"));
+  // A mesh where the run would write its frames: the VTK, PLY or VDB folders.
+  for (const std::string folder : {"cloth_square", "cloth_square_ply", "water_vdb"}) {
+    std::system(("mkdir -p '" + in + "/run/" + folder + "'").c_str());
+    writeWholeFile(in + "/run/" + folder + "/square.obj", squareObj(1.f));
+    std::string meshInRun = scene;
+    meshInRun.replace(meshInRun.find("mesh=\"square.obj\""), 17, "mesh=\"run/" + folder + "/square.obj\"");
+    writeWholeFile(in + "/mesh_in_run.xml", meshInRun);
+    SoakResult r = runSoak("run " + in + "/mesh_in_run.xml -o " + in + "/run --frames 1 --device cpu --quiet");
+    EXPECT_EQ(r.code, 2) << folder << ": " << r.output;
+    EXPECT_NE(r.output.find("would replace"), std::string::npos) << r.output;
+    EXPECT_FALSE(pathExists(in + "/run/water.pvd"));
+  }
   // A subfolder of the scene's folder is fine.
-  r = runSoak("run " + in + "/scene.xml -o " + in + "/out --frames 1 --device cpu --quiet");
+  SoakResult r = runSoak("run " + in + "/scene.xml -o " + in + "/out --frames 1 --device cpu --quiet");
   EXPECT_EQ(r.code, 0) << r.output;
 }
 
