@@ -57,7 +57,10 @@ std::string clothPlyBytes(const ClothPlyFrame& f) {
   for (PlyProperty& p : vertexProps) vtkPLY::ply_describe_property(ply, "vertex", &p);
   vtkPLY::ply_element_count(ply, "face", int(f.triangles.size()));
   vtkPLY::ply_describe_property(ply, "face", &faceProp);
+  // ply_close frees the comment and object-information lists, which
+  // ply_write leaves uninitialised until a first entry: one of each.
   vtkPLY::ply_put_comment(ply, "Soak cloth frame (Doc/output.md)");
+  vtkPLY::ply_put_obj_info(ply, "soak cloth mesh");
   vtkPLY::ply_header_complete(ply);
   vtkPLY::ply_put_element_setup(ply, "vertex");
   std::vector<float> record(floats + 1);  // the last float's bytes hold the colour

@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 
 #include "Output/PlyFiles.h"
@@ -108,10 +109,13 @@ PlyContents readPly(const std::string& path, const std::vector<std::string>& nam
         Face f{};
         vtkPLY::ply_get_element(ply, &f);
         out.faces.emplace_back(f.vertices, f.vertices + f.count);
+        std::free(f.vertices);  // the library mallocs each list for its caller
       }
     }
   }
   vtkPLY::ply_close(ply);
+  for (int e = 0; e < elementCount; ++e) std::free(elementNames[e]);
+  std::free(elementNames);
   return out;
 }
 
