@@ -128,7 +128,7 @@ double reduceSum(const float* x, int n) {
   return out.read();
 }
 float reduceMax(const float* x, int n) {
-  if (n <= 0) return 0.f;
+  if (n <= 0) return -3.0e38f;  // the identity, as on the CPU
   HostValue<float> out;
   std::size_t bytes = 0;
   cub::DeviceReduce::Reduce(nullptr, bytes, x, out.dev, n, MaxOp{}, -3.0e38f);
@@ -136,7 +136,7 @@ float reduceMax(const float* x, int n) {
   return out.read();
 }
 float reduceMin(const float* x, int n) {
-  if (n <= 0) return 0.f;
+  if (n <= 0) return 3.0e38f;
   HostValue<float> out;
   std::size_t bytes = 0;
   cub::DeviceReduce::Reduce(nullptr, bytes, x, out.dev, n, MinOp{}, 3.0e38f);

@@ -12,8 +12,8 @@
 // result does not depend on which lane writes it).
 //
 // On the CPU (and wherever a pass is not split) a group is one lane: the loops
-// then visit candidates in exactly the old order, so CPU results are
-// unchanged. Every lane of a group must reach each laneSum/laneAny, so a pass
+// then visit candidates in the order a plain loop over the cell or list
+// would, with the same results. Every lane of a group must reach each laneSum/laneAny, so a pass
 // may return early only on conditions that are the same for the whole group
 // (those of the particle itself), and writes a per-particle result from the
 // leader only.

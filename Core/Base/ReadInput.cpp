@@ -45,4 +45,10 @@ std::string readInputFile(const std::string& path, std::uint64_t maxBytes, const
   return text;
 }
 
+std::string pathBesideScene(const std::string& sceneFile, const std::string& path) {
+  if (path.empty() || path[0] == '/') return path;
+  const std::size_t slash = sceneFile.find_last_of('/');
+  return slash == std::string::npos ? path : sceneFile.substr(0, slash + 1) + path;
+}
+
 }  // namespace soak

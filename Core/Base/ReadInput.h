@@ -18,4 +18,8 @@ constexpr std::uint64_t kMaxCheckpointBytes = 64ull << 30;   // 64 GiB of state
 // `maxBytes` or unreadable.
 std::string readInputFile(const std::string& path, std::uint64_t maxBytes, const std::string& what);
 
+// A path written in a scene (a mesh, a plugin library): relative ones are
+// taken from the folder of `sceneFile`, absolute ones as they are.
+std::string pathBesideScene(const std::string& sceneFile, const std::string& path);
+
 }  // namespace soak

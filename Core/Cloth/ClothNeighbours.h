@@ -4,9 +4,9 @@
 // the sticking forces: they move water, or move cloth only after their last
 // query).
 //
-// Each of those passes used to walk the 27 cells around a cloth particle in
-// the cloth's grid: in a sheet with the paper's 1 cm vertex spacing and 4 cm
-// cells, 150-300 candidates, of which about 50 lie within h. The lists keep,
+// Walking the 27 cells around a cloth particle in the cloth's grid visits,
+// in a sheet with the paper's 1 cm vertex spacing and 4 cm cells, 150-300
+// candidates, of which about 50 lie within h. The lists keep,
 // once per step, every cloth particle within max(h_ij, th_i + th_j) (the
 // pair support of the SPH passes and the touching distance of Eq. 20), in
 // the grid's order. Each pass still applies its own test, so its sums come

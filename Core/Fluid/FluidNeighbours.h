@@ -1,9 +1,9 @@
 #pragma once
 // Neighbour lists for the fluid solve, built once per step.
 //
-// The density iterations used to query the grid in every pass: 27 cells of
-// about 8 candidates each, most beyond h, for each of 2 passes x
-// Water.iterations. The lists keep only the pairs that can matter: for a
+// Querying the grid in every density pass would visit 27 cells of about 8
+// candidates each, most beyond h, for each of 2 passes x Water.iterations.
+// The lists keep only the pairs that can matter: for a
 // water particle, every water or cloth particle within (1 + skin) h_ij; for a
 // moving cloth particle, every water particle within it. Each pass still
 // applies its own r < h_ij test at the current positions. The list keeps

@@ -29,18 +29,16 @@ FluidSolver::FluidSolver(Device device)
 void FluidSolver::configure(const WaterSettings& water) {
   const float h = water.supportRadius, s = water.spacing;
   const int reach = int(std::ceil(h / s)) + 1;
-  double g2 = 0.0, w = 0.0;
+  double g2 = 0.0;
   for (int k = -reach; k <= reach; ++k)
     for (int j = -reach; j <= reach; ++j)
       for (int i = -reach; i <= reach; ++i) {
         Vec3 x(float(i) * s, float(j) * s, float(k) * s);
         float r = length(x);
-        w += poly6(r * r, h);
         g2 += lengthSquared(spikyGradient(x, r, h));
       }
   restDenominator_ = float(g2);
   wall_ = makeWallDensityTable(s, h, water.particleMass);
-  restKernelSum_ = float(w);
 }
 
 std::vector<float> FluidSolver::downloadDensity(int count) const {

@@ -47,13 +47,11 @@ class FluidSolver {
   // The same in device memory: densitySlots() slots (at most the particle count).
   const float* density() const { return density_.data(); }
   std::size_t densitySlots() const { return density_.size(); }
-  float restDenominator() const { return restDenominator_; }
 
  private:
   void resize(int n);
   Device device_;
   float restDenominator_ = 1.f;  // G0: sum_j |grad W|^2 over a full rest lattice
-  float restKernelSum_ = 1.f;
   WallDensityTable wall_;
   Buffer<float> lambda_, density_, volume_, scratch_;
   Buffer<Vec3> omega_;

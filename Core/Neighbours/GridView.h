@@ -92,20 +92,14 @@ SOAK_INLINE bool mayHoldNear(const GridView& g, std::uint32_t b) {
   return !g.nearBits || ((g.nearBits[b >> 5] >> (b & 31u)) & 1u);
 }
 
-// Calls f(j) for the slots j of the cell with key `key` that are this
-// lane's: of the cell's bucket's entries, every lanes.size-th from
-// lanes.index (all of them, in order, for one lane).
-// (forEachInBucket: the same where the caller knows the key's bucket.)
+// Calls f(j) for the slots j of the cell with key `key` in bucket `b` (the
+// key's bucket, bucketOfKey) that are this lane's: of the bucket's entries,
+// every lanes.size-th from lanes.index (all of them, in order, for one lane).
 template <class F>
 SOAK_INLINE void forEachInBucket(const GridView& g, std::uint32_t key, std::uint32_t b, const Lanes& lanes, F&& f) {
   const BucketRange r = g.range[b];
   for (std::uint32_t j = r.start + std::uint32_t(lanes.index); j < r.end; j += std::uint32_t(lanes.size))
     if (g.cellKey[j] == key) f(slotOfEntry(g, j));
-}
-
-template <class F>
-SOAK_INLINE void forEachInCell(const GridView& g, std::uint32_t key, const Lanes& lanes, F&& f) {
-  forEachInBucket(g, key, bucketOfKey(key, g.bucketMask), lanes, f);
 }
 
 // The Morton code of cell (x, y, z) is spread(x) | spread(y) << 1 |

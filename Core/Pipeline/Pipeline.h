@@ -28,14 +28,25 @@ struct StageTiming {
 };
 
 // The step: an ordered list of named, timed stages. Core adds the dry
-// stages (predict, neighbours, ..., finalize); modules insert theirs
-// relative to a named anchor (any existing stage name).
+// stages (predict, neighbours, ..., finalize; StageNames.h); modules insert
+// theirs relative to a named anchor (any stage's name, core's or another
+// module's).
 class Pipeline {
  public:
   void append(Stage stage);
-  // Throws std::invalid_argument naming the valid anchors if `anchor` is absent.
+  // Outside collectFor/placeWaiting: throws std::invalid_argument naming
+  // the valid anchors if `anchor` is absent, or if the stage's name is taken.
   void insertBefore(const std::string& anchor, Stage stage);
   void insertAfter(const std::string& anchor, Stage stage);
+
+  // While the modules add their stages (Simulation::initialize), a stage
+  // whose anchor is not in the step yet waits for it, so that elements may
+  // stand in any order in the scene: collectFor names the element (its
+  // file:line) whose stages follow; placeWaiting then places each waiting
+  // stage once its anchor is in, and reports an anchor that no stage
+  // provides, or a name taken twice, as bad input at that element.
+  void collectFor(const std::string& where);
+  void placeWaiting();
   bool has(const std::string& name) const;
   std::vector<std::string> names() const;
 
@@ -54,6 +65,17 @@ class Pipeline {
  private:
   std::size_t indexOf(const std::string& anchor) const;
   void insertAt(std::size_t index, Stage stage);
+  void insertNextTo(const std::string& anchor, bool after, Stage stage);
+  std::string stageList() const;
+  struct Waiting {
+    std::string anchor;
+    bool after = false;
+    Stage stage;
+    std::string where;
+  };
+  bool collecting_ = false;
+  std::string requester_;
+  std::vector<Waiting> waiting_;
   std::vector<Stage> stages_;
   std::vector<StageTiming> timings_;
   std::unique_ptr<DeviceMarks> marks_;  // profile runs; made again if the device changes

@@ -21,7 +21,10 @@ PluginLoader::~PluginLoader() {
 void PluginLoader::loadFile(const std::string& path, const std::string& where) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) throw InputError("plugin library '" + path + "' does not exist", where);
-  void* h = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  // A name without a slash would send dlopen to the library search path:
+  // the file meant is the one beside us.
+  const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+  void* h = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!h) throw InputError(std::string("cannot load plugin '") + path + "': " + dlerror(), where);
   if (std::find(handles_.begin(), handles_.end(), h) != handles_.end()) {
     dlclose(h);

@@ -1,5 +1,7 @@
 #include "Registry/ElementDecl.h"
 
+#include "Base/ReadInput.h"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -144,12 +146,8 @@ bool ElementParams::given(const std::string& n) const {
 }
 
 std::string ElementParams::resolvePath(const std::string& file) const {
-  if (file.empty() || file[0] == '/') return file;
-  std::string scene = where_;
-  const auto colon = scene.rfind(':');
-  if (colon != std::string::npos) scene = scene.substr(0, colon);
-  const auto slash = scene.rfind('/');
-  return slash == std::string::npos ? file : scene.substr(0, slash + 1) + file;
+  const auto colon = where_.rfind(':');  // where_ is "scene file:line"
+  return pathBesideScene(colon == std::string::npos ? where_ : where_.substr(0, colon), file);
 }
 
 }  // namespace soak

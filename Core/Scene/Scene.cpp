@@ -174,7 +174,7 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
     if (p.empty() && name.empty()) throw InputError("<Plugin> needs name=\"...\" or path=\"...\"", w);
     if (!loadPlugin) throw InputError("<Plugin>: plugins cannot be loaded here", w);
     if (!p.empty()) {
-      std::string resolved = (p[0] == '/') ? p : scene.directory() + "/" + p;
+      const std::string resolved = pathBesideScene(scene.path_, p);
       scene.inputFiles_.push_back(resolved);
       loadPlugin(resolved, true, w);
     } else {
@@ -207,10 +207,11 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
     const std::string name = n.name();
     const ElementDecl* decl = registry.find(name);
     if (!decl) {
-      std::string hint;
-      if (name == "WetCloth" && !registry.hasPlugin("WetCloth"))
-        hint = " (it is provided by the WetCloth plugin: is it in the plugin directory, or add <Plugin name=\"WetCloth\"/>)";
-      throw InputError("unknown element <" + clipForMessage(name) + ">" + hint + suggestionText(name, registry.names()), where(line));
+      // A typo, or a plugin's element whose plugin is not loaded.
+      throw InputError("unknown element <" + clipForMessage(name) + ">" + suggestionText(name, registry.names()) +
+                           "; if a plugin provides it, put the plugin in the plugin directory or load it with "
+                           "<Plugin name=\"...\"/> or --plugin",
+                       where(line));
     }
     if (decl->unique && seen[name]++ > 0)
       throw InputError("<" + name + "> may appear only once per scene", where(line));
@@ -254,16 +255,6 @@ Scene Scene::parse(const std::string& text, const std::string& path, const std::
   doc.save(out, "  ");
   scene.textAsRun_ = out.str();
   return scene;
-}
-
-std::string Scene::directory() const {
-  std::size_t slash = path_.find_last_of('/');
-  return slash == std::string::npos ? std::string(".") : path_.substr(0, slash);
-}
-
-std::string resolveScenePath(const Scene& scene, const std::string& file) {
-  if (file.empty() || file[0] == '/') return file;
-  return scene.directory() + "/" + file;
 }
 
 }  // namespace soak

@@ -34,8 +34,6 @@ class Scene {
 
   const std::vector<SceneElement>& elements() const { return elements_; }
   const std::string& path() const { return path_; }
-  // Folder of the scene file (for relative paths such as meshes).
-  std::string directory() const;
   // The scene as run: the file with overrides applied.
   const std::string& textAsRun() const { return textAsRun_; }
   // The files the run reads: the scene file, its meshes (parameters declared
@@ -50,8 +48,5 @@ class Scene {
   std::vector<SceneElement> elements_;
   std::vector<std::string> inputFiles_;
 };
-
-// Resolves `file` relative to the scene's folder unless it is absolute.
-std::string resolveScenePath(const Scene& scene, const std::string& file);
 
 }  // namespace soak

@@ -22,7 +22,7 @@ std::unique_ptr<LoadedScene> loadScene(const SceneSource& source, Device device)
                    ? Scene::load(source.path, source.overrides, run->registry, request)
                    : Scene::parse(source.text, source.path, source.overrides, run->registry, request);
   run->sim = std::make_unique<Simulation>(device);
-  for (const SceneElement& e : run->scene.elements()) run->sim->addModule(e.decl->factory(e.params));
+  for (const SceneElement& e : run->scene.elements()) run->sim->addModule(e.decl->factory(e.params), {e.params.where(), e.decl->provider != "Core"});
   run->sim->initialize();
   return run;
 }

@@ -9,6 +9,7 @@
 #include "Cloth/ClothSolve.h"
 #include "Coupling/TriangleCoupling.h"
 #include "Physics/Integrate.h"
+#include "Pipeline/StageNames.h"
 #include "Simulation/Instability.h"
 
 namespace soak {
@@ -20,14 +21,19 @@ Simulation::Simulation(Device device)
 
 Simulation::~Simulation() = default;
 
-void Simulation::addModule(std::unique_ptr<Module> module) { modules_.push_back(std::move(module)); }
+void Simulation::addModule(std::unique_ptr<Module> module, ModuleOrigin origin) {
+  modules_.push_back(std::move(module));
+  origins_.push_back(std::move(origin));
+}
 
 void Simulation::initialize() {
   for (auto& m : modules_) m->configure(*this);
   maxSupportRadius_ = std::max(maxSupportRadius_, water.supportRadius);
   checkCellOccupancy();  // before the wall-density table, whose cost grows as (h / r0)^3
   fluid.configure(water);
-  for (auto& m : modules_) m->setup(*this);
+  for (const bool plugins : {false, true})
+    for (std::size_t i = 0; i < modules_.size(); ++i)
+      if (origins_[i].plugin == plugins) modules_[i]->setup(*this);
   checkCellOccupancy();
   cloth.upload();
   cloth.updateSlots(particles.view());
@@ -35,16 +41,20 @@ void Simulation::initialize() {
   for (const auto& box : sinks) sinkCorners.insert(sinkCorners.end(), {box.first, box.second});
   sinkBuffer_.upload(sinkCorners);
   addCoreStages();
-  for (auto& m : modules_) m->addStages(pipeline, *this);
+  for (std::size_t i = 0; i < modules_.size(); ++i) {
+    pipeline.collectFor(origins_[i].where);
+    modules_[i]->addStages(pipeline, *this);
+  }
+  pipeline.placeWaiting();
 }
 
 void Simulation::addCoreStages() {
-  pipeline.append({"predict", [](Simulation& s) {
+  pipeline.append({stage::kPredict, [](Simulation& s) {
                      predictPositions(s.device(), s.particles.view(), s.settings.gravity, s.settings.timeStep);
                    }});
   // Before the grid is built, so that removing particles never leaves a stale grid.
-  pipeline.append({"drain", [](Simulation& s) { s.drainWater(); }});
-  pipeline.append({"neighbours", [](Simulation& s) {
+  pipeline.append({stage::kDrain, [](Simulation& s) { s.drainWater(); }});
+  pipeline.append({stage::kNeighbours, [](Simulation& s) {
                      s.grid.build(s.particles, s.maxSupportRadius());
                      if (!s.cloth.empty()) {
                        s.cloth.updateSlots(s.particles.view());
@@ -52,8 +62,8 @@ void Simulation::addCoreStages() {
                        s.fluid.computeBoundaryVolumes(s);
                      }
                    }});
-  pipeline.append({"fluid.solve", [](Simulation& s) { s.fluid.solve(s); }});
-  pipeline.append({"cloth.solve", [](Simulation& s) {
+  pipeline.append({stage::kFluidSolve, [](Simulation& s) { s.fluid.solve(s); }});
+  pipeline.append({stage::kClothSolve, [](Simulation& s) {
                      if (s.cloth.empty()) return;
                      ParticleView p = s.particles.view();
                      ClothView c = s.cloth.view();
@@ -86,19 +96,19 @@ void Simulation::addCoreStages() {
                                       kCollisionRadiusScale, float(s.settings.timeStep));
                      contacts(p);
                    }});
-  pipeline.append({"collide", [](Simulation& s) {
+  pipeline.append({stage::kCollide, [](Simulation& s) {
                      projectColliders(s.device(), s.particles.view(), s.deviceColliders(),
                                       static_cast<int>(s.colliders.size()), kCollisionRadiusScale,
                                       s.settings.timeStep);
                    }});
-  pipeline.append({"coupling", [](Simulation& s) {
+  pipeline.append({stage::kCoupling, [](Simulation& s) {
                      if (s.cloth.empty()) return;
                      s.couplingMoved_.resize(std::size_t(s.particles.count()));
                      projectWaterOutOfCloth(s.device(), s.particles.view(), s.cloth.grid(), s.cloth.view(),
                                             s.couplingStiffness, s.couplingPasses, s.couplingMoved_.data(),
                                             s.couplingMinLanes);
                    }});
-  pipeline.append({"finalize", [](Simulation& s) {
+  pipeline.append({stage::kFinalize, [](Simulation& s) {
                      const bool substeps = s.settings.clothSubsteps > 1 && !s.cloth.empty();
                      updateVelocities(s.device(), s.particles.view(), s.settings.timeStep,
                                       substeps ? s.velocityFix_.data() : nullptr);

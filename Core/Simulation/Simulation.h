@@ -19,6 +19,13 @@ namespace soak {
 class StateWriter;
 class StateReader;
 
+// Where a module comes from: its element's file:line, and whether a plugin
+// declares that element.
+struct ModuleOrigin {
+  std::string where;
+  bool plugin = false;
+};
+
 // Everything one run holds: settings, particles, the neighbour grid,
 // colliders, the modules made from the scene, and the step pipeline.
 class Simulation {
@@ -30,9 +37,13 @@ class Simulation {
 
   Device device() const { return device_; }
 
-  // Takes ownership of the modules made from the scene.
-  void addModule(std::unique_ptr<Module> module);
-  // configure, setup, then build the pipeline (core stages + module stages).
+  // Takes ownership of the modules made from the scene, in scene order.
+  void addModule(std::unique_ptr<Module> module, ModuleOrigin origin = {});
+  // configure (every module), setup (the core's elements, then the
+  // plugins': a plugin's element may stand anywhere in the scene and still
+  // find the cloth and water the core's elements make), then the pipeline:
+  // core stages, then each module's, placed once their anchors are in
+  // (Pipeline::collectFor). Checkpoints and stats keep scene order.
   void initialize();
   // One time step.
   void step(bool profile = false);
@@ -157,6 +168,7 @@ class Simulation {
   Buffer<float> removedMass_;
   Buffer<Vec3> sinkBuffer_;
   std::vector<std::unique_ptr<Module>> modules_;
+  std::vector<ModuleOrigin> origins_;  // by module
   std::unique_ptr<DownloadQueue> statsDownloads_;  // collectStats()
   Buffer<Collider> colliderBuffer_;
   bool collidersDirty_ = true;

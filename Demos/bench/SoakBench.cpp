@@ -114,7 +114,7 @@ long long parseCount(const std::string& s) {
 // over the middle of the sheet (1/1.3 of its width), as deep as 3/4 n
 // particles make it (about 0.4 m at every size).
 //
-// "dense" sheet (the first version, kept for comparison): the sheet is 1.3
+// "dense" sheet (for comparison): the sheet is 1.3
 // times the width of a cubic block, so its vertices crowd closer as n grows
 // (4.7 mm at 1M, 3.2 mm at 10M) and a cloth particle has about 230 cloth
 // neighbours within h: the cloth-cloth passes then cost 4-5 times the

@@ -2,6 +2,7 @@
 // stage before "predict".
 #include "AirDrag.h"
 #include "Pipeline/Pipeline.h"
+#include "Pipeline/StageNames.h"
 #include "Plugins/PluginApi.h"
 #include "Simulation/Simulation.h"
 
@@ -12,7 +13,7 @@ class AirDragModule : public soak::Module {
   explicit AirDragModule(float k) : k_(k) {}
   void addStages(soak::Pipeline& pipeline, soak::Simulation&) override {
     const float k = k_;
-    pipeline.insertBefore("predict", {"airdrag.apply", [k](soak::Simulation& s) {
+    pipeline.insertBefore(soak::stage::kPredict, {"airdrag.apply", [k](soak::Simulation& s) {
                                         soak::airdrag::applyAirDrag(s.device(), s.particles.view(), k,
                                                                     s.settings.timeStep);
                                       }});

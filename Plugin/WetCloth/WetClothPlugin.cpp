@@ -11,6 +11,7 @@
 #include "Checkpoint/StateStream.h"
 #include "Neighbours/PairListsState.h"
 #include "Pipeline/Pipeline.h"
+#include "Pipeline/StageNames.h"
 #include "Plugins/PluginApi.h"
 #include "Simulation/Simulation.h"
 #include "FickDiffusion.h"
@@ -71,8 +72,8 @@ class WetClothModule : public Module {
   void addStages(Pipeline& pipeline, Simulation&) override {
     // Algorithm 1: after the cloth solve, volume and saturation; the core's
     // coupling stage then reads kappa_couple; then absorb, diffuse, emit, stick.
-    pipeline.insertBefore("coupling", {"wet.volume", [this](Simulation& s) { porosity(s); }});
-    pipeline.insertAfter("coupling", {"wet.absorb", [this](Simulation& s) { absorb(s); }});
+    pipeline.insertBefore(stage::kCoupling, {"wet.volume", [this](Simulation& s) { porosity(s); }});
+    pipeline.insertAfter(stage::kCoupling, {"wet.absorb", [this](Simulation& s) { absorb(s); }});
     pipeline.insertAfter("wet.absorb", {"wet.diffuse", [this](Simulation& s) { diffuse(s); }});
     pipeline.insertAfter("wet.diffuse", {"wet.emit", [this](Simulation& s) { emit(s); }});
     pipeline.insertAfter("wet.emit", {"wet.stick", [this](Simulation& s) { stick(s); }});
@@ -185,7 +186,7 @@ class WetClothModule : public Module {
       initialised_ = true;
       if (initialSaturation_ > 0.f) setInitialSaturation(s);
     }
-    updatePorosity(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_);
+    updatePorosity(s.device(), s.particles.view(), arrays(s), w_);
   }
   void absorb(Simulation& s) {
     absorbWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_, float(s.settings.timeStep));
@@ -193,7 +194,7 @@ class WetClothModule : public Module {
   void diffuse(Simulation& s) {
     const float dt = float(s.settings.timeStep);
     if (w_.form != DiffusionForm::Fick) {
-      diffuseWater(s.device(), s.particles.view(), s.grid.view(), arrays(s), w_, ref_, dt);
+      diffuseWater(s.device(), s.particles.view(), arrays(s), w_, ref_, dt);
       return;
     }
     if (w_.diffusionIterations == 0) return;
@@ -208,7 +209,7 @@ class WetClothModule : public Module {
     ParticleView p = s.particles.view();
     due_.resize(std::size_t(a.cloth.count));
     dripOffset_.resize(std::size_t(a.cloth.count));
-    transferBuffers(s.device(), p, s.grid.view(), a, w_, ref_, float(s.settings.timeStep), due_.data());
+    transferBuffers(s.device(), p, a, w_, ref_, float(s.settings.timeStep), due_.data());
     dripSources_.resize(std::size_t(dripRoom_));
     takeDripMass(s.device(), p, a, w_, dripRoom_, due_.data(), dripOffset_.data(), dripSources_.data(),
                  dripCounters_.data());
@@ -217,7 +218,7 @@ class WetClothModule : public Module {
   }
   void stick(Simulation& s) {
     if (!w_.sticking) return;
-    stickWetCloth(s.device(), s.particles.view(), s.grid.view(), s.cloth.view(), arrays(s), w_,
+    stickWetCloth(s.device(), s.particles.view(), s.cloth.view(), arrays(s), w_,
                   float(s.settings.timeStep));
   }
 
@@ -255,7 +256,7 @@ class WetClothModule : public Module {
   void setInitialSaturation(Simulation& s) {
     ParticleView p = s.particles.view();
     WetArrays a = arrays(s);
-    updatePorosity(s.device(), p, s.grid.view(), a, w_);  // volumes
+    updatePorosity(s.device(), p, a, w_);  // volumes
     std::vector<float> volume = s.particles.downloadChannel(volume_);
     const std::vector<int> phase = s.particles.downloadPhases();
     std::vector<float> held(volume.size(), 0.f);

@@ -56,7 +56,7 @@ SOAK_INLINE float transferWeight(Vec3 xk, float hk, Vec3 xi, float hi, Vec3 g) {
 
 }  // namespace
 
-void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w) {
+void updatePorosity(Device d, ParticleView p, WetArrays a, const WetParams& w) {
   const float sEW = w.sEW, c = w.c, sT = w.sT, sMax = w.sMax;
   const bool wetWeight = w.wetWeight;
   const ClothListWalk lists{a.clothNeighbours};
@@ -180,7 +180,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
   }, "wet.absorb.water");
 }
 
-void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+void diffuseWater(Device d, ParticleView p, WetArrays a, const WetParams& w, WaterReference ref,
                   float dt) {
   const DiffusionSchedule schedule = diffusionSchedule(w, dt);
   const float c = w.c, sMax = w.sMax, kD = w.kappaD, etaD = w.etaD, kS = schedule.smoothing, eps = w.epsilon;
@@ -272,7 +272,7 @@ void applyHeldWater(Device d, WetArrays a, float c, const char* stage) {
   }, stage);
 }
 
-void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+void transferBuffers(Device d, ParticleView p, WetArrays a, const WetParams& w, WaterReference ref,
                      float dt, int* due) {
   const Vec3 gd = ref.gravityDir;
   // The share of a buffer that moves this step: all of it in one of the
@@ -417,7 +417,7 @@ void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
   }, "wet.emit.attract");
 }
 
-void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays a, const WetParams& w, float dt) {
+void stickWetCloth(Device d, ParticleView p, ClothView c, WetArrays a, const WetParams& w, float dt) {
   const float sT = w.sT, kAd = w.kappaAd, etaAd = w.etaAd >= 0.f ? w.etaAd : w.kappaAd * w.sT * w.sT;
   const float* S = a.saturation;
   Vec3* delta = a.delta;

@@ -43,7 +43,7 @@ struct WaterReference {
 // wet.volume: V_i (Eq. 10's volume), water above S^EW moved from the fabric
 // to the buffer (Section 4.4), S_i, kappa_couple per vertex (Eq. 22), and the
 // particle mass m_dry + held + buffer (wet weight).
-void updatePorosity(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w);
+void updatePorosity(Device d, ParticleView p, WetArrays a, const WetParams& w);
 
 // wet.absorb (Eq. 11): water particles give water to the cloth particles
 // around them; partial absorption shrinks a particle's mass and radius,
@@ -53,7 +53,7 @@ void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetPar
 
 // wet.diffuse (Eq. 12-17): the saturation constraint, conservative or
 // literal, over diffusionSchedule(w, dt)'s passes.
-void diffuseWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+void diffuseWater(Device d, ParticleView p, WetArrays a, const WetParams& w, WaterReference ref,
                   float dt);
 
 // The diffusion passes' last kernel: held water becomes scratchC (the next
@@ -65,7 +65,7 @@ void applyHeldWater(Device d, WetArrays a, float c, const char* stage);
 // the paper's steps) moves to the cloth particles below. due[v] (per
 // cloth item, ClothSlots order) becomes 1 where the buffer now holds at
 // least m_threshold: a drip is due there (takeDripMass).
-void transferBuffers(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
+void transferBuffers(Device d, ParticleView p, WetArrays a, const WetParams& w, WaterReference ref,
                      float dt, int* due);
 
 // Where a drip starts: its cloth particle's predicted position and velocity.
@@ -113,6 +113,6 @@ void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
 
 // wet.stick (Eq. 20): touching cloth particles of different layers attract,
 // most at S^T, as a position change dt^2 f / m.
-void stickWetCloth(Device d, ParticleView p, GridView g, ClothView c, WetArrays a, const WetParams& w, float dt);
+void stickWetCloth(Device d, ParticleView p, ClothView c, WetArrays a, const WetParams& w, float dt);
 
 }  // namespace soak::wet

@@ -18,7 +18,7 @@ std::unique_ptr<Simulation> makeSimulation(const std::string& sceneXml, Device d
                                else reg.loader.loadByName(what, where);
                              });
   auto sim = std::make_unique<Simulation>(device);
-  for (const SceneElement& e : scene.elements()) sim->addModule(e.decl->factory(e.params));
+  for (const SceneElement& e : scene.elements()) sim->addModule(e.decl->factory(e.params), {e.params.where(), e.decl->provider != "Core"});
   sim->initialize();
   return sim;
 }

@@ -39,8 +39,8 @@ TEST(Integrate, ParticlesComeToRestOnPlane) {
                    reg);
   const int count = sim->particles.count();
   for (int k = 0; k < 200; ++k) sim->step();
-  // None lost: a particle that went NaN used to be drained as "outside the
-  // domain", and this test passed over the ones left.
+  // None lost: a particle that went NaN would be drained as "outside the
+  // domain", and the checks below would pass over the ones left.
   ASSERT_EQ(sim->particles.count(), count);
   const float r = 0.25f * sim->water.supportRadius;
   for (const Float4& p : sim->particles.downloadPositions()) EXPECT_NEAR(p.y, r, 1e-5);

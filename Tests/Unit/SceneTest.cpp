@@ -42,9 +42,14 @@ TEST(Scene, UnknownElementSuggestsClosest) {
   EXPECT_NE(e.find("did you mean 'Plane'"), std::string::npos) << e;
 }
 
-TEST(Scene, WetClothWithoutPluginSaysWhere) {
+TEST(Scene, PluginElementWithoutItsPluginSaysHowToLoadIt) {
+  // The core names no plugin: an element no loaded plugin declares gets
+  // the ways a plugin is loaded.
   std::string e = errorOf("<Scene>\n  <WetCloth/>\n</Scene>");
-  EXPECT_NE(e.find("WetCloth plugin"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown element <WetCloth>"), std::string::npos) << e;
+  EXPECT_NE(e.find(":2"), std::string::npos) << e;
+  EXPECT_NE(e.find("<Plugin name="), std::string::npos) << e;
+  EXPECT_NE(e.find("--plugin"), std::string::npos) << e;
 }
 
 TEST(Scene, WrongTypeAndRange) {
