@@ -15,7 +15,7 @@
 namespace soak {
 
 Simulation::Simulation(Device device)
-    : particles(device), grid(device), cloth(device), fluid(device), device_(device), contactDelta_(device),
+    : particles(device), grid(device), cloth(device), fluid(device), vertexFields(device), device_(device), contactDelta_(device),
       instabilityScratch_(device), substepStart_(device), substepVelocity_(device), velocityFix_(device),
       removeFlag_(device), couplingMoved_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
@@ -105,7 +105,7 @@ void Simulation::addCoreStages() {
                      if (s.cloth.empty()) return;
                      s.couplingMoved_.resize(std::size_t(s.particles.count()));
                      projectWaterOutOfCloth(s.device(), s.particles.view(), s.cloth.grid(), s.cloth.view(),
-                                            s.couplingStiffness, s.couplingPasses, s.couplingMoved_.data(),
+                                            s.vertexFields.find(field::kCouplingStiffness), s.couplingPasses, s.couplingMoved_.data(),
                                             s.couplingMinLanes);
                    }});
   pipeline.append({stage::kFinalize, [](Simulation& s) {

@@ -6,6 +6,7 @@
 #include "Backend/Buffer.h"
 #include "Backend/DownloadQueue.h"
 #include "Cloth/ClothSystem.h"
+#include "Cloth/VertexFields.h"
 #include "Fluid/FluidSolver.h"
 #include "Neighbours/NeighbourGrid.h"
 #include "Particles/ParticleState.h"
@@ -93,9 +94,9 @@ class Simulation {
   Pipeline pipeline;
   // Sink boxes (min, max): water inside is removed and counted as drained.
   std::vector<std::pair<Vec3, Vec3>> sinks;
-  // kappa_couple per cloth vertex for Eq. 21 (null: 1, a dry cloth). A
-  // module such as WetCloth points it at its own device array.
-  const float* couplingStiffness = nullptr;
+  // Per-cloth-vertex fields shared by name (Cloth/VertexFields.h): the
+  // coupling stage reads field::kCouplingStiffness, WetCloth writes it.
+  VertexFields vertexFields;
   // Passes of the water-triangle constraint per step (n_s of Eq. 5 for it).
   int couplingPasses = 2;
   // Fewest GPU lanes per water particle in the coupling passes (Base/Lanes.h;

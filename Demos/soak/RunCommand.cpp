@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <algorithm>
+
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -42,18 +44,33 @@ std::string pvdList(const Simulation& sim, const std::string& out) {
   return list;
 }
 
+// Stages named "group.stage" are also summed per group of two or more
+// (wet.*: every stage of the WetCloth plugin).
 void printProfile(const Simulation& sim) {
-  double total = 0.0, wetting = 0.0;
+  struct Group {
+    std::string name;
+    double ms = 0.0;
+    int stages = 0;
+  };
+  double total = 0.0;
+  std::vector<Group> groups;  // in order of their first stage
   for (const StageTiming& t : sim.pipeline.timings()) {
     total += t.meanMs();
-    if (t.name.rfind("wet.", 0) == 0) wetting += t.meanMs();
+    const std::size_t dot = t.name.find('.');
+    if (dot == std::string::npos) continue;
+    const std::string group = t.name.substr(0, dot);
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& e) { return e.name == group; });
+    if (g == groups.end()) g = groups.insert(groups.end(), Group{group});
+    g->ms += t.meanMs();
+    ++g->stages;
   }
   std::printf("\nper-stage mean time (ms per step, device %s, %d particles at the end):\n",
               deviceName(sim.device()), sim.particles.count());
   std::printf("  %-22s %10s %7s\n", "stage", "ms", "share");
   for (const StageTiming& t : sim.pipeline.timings())
     std::printf("  %-22s %10.4f %6.1f%%\n", t.name.c_str(), t.meanMs(), total > 0 ? 100.0 * t.meanMs() / total : 0.0);
-  std::printf("  %-22s %10.4f\n", "wetting (wet.*)", wetting);
+  for (const Group& g : groups)
+    if (g.stages > 1) std::printf("  %-22s %10.4f\n", (g.name + ".* together").c_str(), g.ms);
   std::printf("  %-22s %10.4f\n", "total", total);
 }
 

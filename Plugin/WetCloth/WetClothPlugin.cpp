@@ -48,7 +48,7 @@ class WetClothModule : public Module {
     for (std::size_t i = 0; i < mass.size(); ++i)
       if (isCloth(phase[i])) dry[std::size_t(id[i])] = mass[i];
     // Every array on the simulation's device (the Buffer members start on the CPU).
-    for (Buffer<float>* b : {&dryMass_, &kappa_, &scratchA_, &scratchB_, &scratchC_}) *b = Buffer<float>(sim.device());
+    for (Buffer<float>* b : {&dryMass_, &scratchA_, &scratchB_, &scratchC_}) *b = Buffer<float>(sim.device());
     delta_ = Buffer<Vec3>(sim.device());
     due_ = Buffer<int>(sim.device());
     dripOffset_ = Buffer<int>(sim.device());
@@ -59,8 +59,8 @@ class WetClothModule : public Module {
     dripRoomCap_ = std::max(kMinDripRoom, sim.cloth.vertexCount() / 32);
     maxListCapacity_ = sim.maxListCapacity(sim.cloth.vertexCount());
     dryMass_.upload(dry);
-    kappa_.upload(std::vector<float>(std::size_t(vertices), 1.f));
-    sim.couplingStiffness = kappa_.data();
+    // kappa_couple (Eq. 22), the core's field that its coupling stage reads.
+    kappa_ = sim.vertexFields.get(field::kCouplingStiffness, vertices, 1.f);
     ref_.mass = sim.water.particleMass;
     ref_.supportRadius = sim.water.supportRadius;
     ref_.gravity = length(sim.settings.gravity);
@@ -169,7 +169,7 @@ class WetClothModule : public Module {
     a.scratchB = scratchB_.data();
     a.scratchC = scratchC_.data();
     a.delta = delta_.data();
-    a.kappaCouple = kappa_.data();
+    a.kappaCouple = kappa_;
     a.dryMass = dryMass_.data();
     a.cloth = clothSlots(sim.cloth.view());
     a.clothGrid = sim.cloth.grid();
@@ -275,7 +275,8 @@ class WetClothModule : public Module {
   std::string where_;
   WaterReference ref_;
   int held_ = -1, buffer_ = -1, saturation_ = -1, volume_ = -1;
-  Buffer<float> dryMass_, kappa_, scratchA_, scratchB_, scratchC_;
+  Buffer<float> dryMass_, scratchA_, scratchB_, scratchC_;
+  float* kappa_ = nullptr;  // the core's field::kCouplingStiffness
   Buffer<Vec3> delta_;
   static constexpr int kMinDripRoom = 8;
   Buffer<int> due_, dripOffset_;
