@@ -6,6 +6,7 @@ find_package(tinyobjloader REQUIRED)
 
 # VTK: the normal way first, then ParaView's own VTK (paraview-dev), which can
 # live beside python3-paraview on one machine (libvtk9-dev cannot).
+# IOPLY: the tests read the PLY export back through VTK.
 set(SOAK_VTK_COMPONENTS CommonCore CommonDataModel IOXML IOCore IOPLY FiltersCore)
 find_package(VTK QUIET COMPONENTS ${SOAK_VTK_COMPONENTS})
 if(NOT VTK_FOUND)

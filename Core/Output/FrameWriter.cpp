@@ -93,8 +93,8 @@ void FrameWriter::captureLayout(Simulation& sim) {
     clothLayout_.push_back(std::move(l));
   }
   surfaceOn_ = sim.settings.surfaceCellSize > 0.f;
-  surfaceCellSize_ = sim.settings.surfaceCellSize;
-  surfaceIso_ = sim.settings.surfaceIso;
+  splatCellSize_ = sim.settings.surfaceCellSize;
+  splatIso_ = sim.settings.surfaceIso;
   restDensity_ = sim.water.restDensity;
   waterSpacing_ = sim.water.spacing;
   particleMass_ = sim.water.particleMass;
@@ -102,9 +102,10 @@ void FrameWriter::captureLayout(Simulation& sim) {
     // The surface mesh's splat where <WaterSurface> sets one; else a cell of
     // 0.7 r0 (the paper's), no finer than 1/31 of the support's diameter so
     // that a particle touches at most 32^3 grid points (WaterSurface's limit).
-    vdbCellSize_ = surfaceOn_ ? surfaceCellSize_
-                                      : std::max(0.7f * sim.water.spacing, 2.f * sim.water.supportRadius / 31.f);
-    vdbIso_ = surfaceOn_ ? surfaceIso_ : 0.5f;
+    if (!surfaceOn_) {
+      splatCellSize_ = std::max(0.7f * sim.water.spacing, 2.f * sim.water.supportRadius / 31.f);
+      splatIso_ = 0.5f;
+    }
     makeDirectories(dir_ + "/water_vdb");
   }
   if (surfaceOn_ && !surface_) {
@@ -252,13 +253,15 @@ FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
   }
   w.water = "water/" + frameName("water", f.frame, "vtu");
   writeParticlesVtu(dir_ + "/" + w.water, points, {v, m, r, ids, rho}, settings_.compression);
+  // One splat for the surface mesh and the VDB level set.
+  WaterSurfaceSettings splatSettings;
+  splatSettings.cellSize = splatCellSize_;
+  splatSettings.iso = splatIso_;
+  RelativeDensityGrid splat;
+  if (surfaceOn_ || settings_.vdb) splat = splatRelativeDensity(points, m.values, r.values, restDensity_, splatSettings);
   if (surfaceOn_) {
-    WaterSurfaceSettings settings;
-    settings.cellSize = surfaceCellSize_;
-    settings.iso = surfaceIso_;
-    vtkSmartPointer<vtkPolyData> surface = buildWaterSurface(points, m.values, r.values, restDensity_, settings);
     w.surface = "water_surface/" + frameName("water_surface", f.frame, "vtp");
-    writePolyDataVtp(dir_ + "/" + w.surface, surface, settings_.compression);
+    writePolyDataVtp(dir_ + "/" + w.surface, contourRelativeDensity(splat, splatIso_), settings_.compression);
   }
   if (settings_.vdb) {
     WaterVdbFrame vdb;
@@ -274,14 +277,8 @@ FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
       // remainder) draws with the radius of its volume.
       vdb.pointRadius[k] = 0.5f * waterSpacing_ * std::cbrt(std::max(0.f, c.mass[i] / particleMass_));
     }
-    vdb.mass = m.values;
-    vdb.supportRadius = r.values;
-    vdb.restDensity = restDensity_;
     vdb.spacing = waterSpacing_;
-    WaterSurfaceSettings surface;
-    surface.cellSize = vdbCellSize_;
-    surface.iso = vdbIso_;
-    writeWaterVdb(dir_ + "/water_vdb/" + frameName("water", f.frame, "vdb"), vdb, surface);
+    writeWaterVdb(dir_ + "/water_vdb/" + frameName("water", f.frame, "vdb"), vdb, splat, splatSettings);
   }
   for (const ClothLayout& obj : clothLayout_) {
     std::vector<Vec3> clothPoints(std::size_t(obj.vertexCount));

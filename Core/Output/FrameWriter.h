@@ -142,10 +142,11 @@ class FrameWriter {
   std::vector<ClothLayout> clothLayout_;
   std::vector<std::string> channelNames_;
   bool surfaceOn_ = false;
-  float surfaceCellSize_ = 0.f, surfaceIso_ = 0.5f;
+  // The density splat that the surface mesh and the VDB level set share:
+  // <WaterSurface>'s cell and iso, or the VDB's defaults without it.
+  float splatCellSize_ = 0.f, splatIso_ = 0.5f;
   float restDensity_ = 1000.f;
-  // OpenVDB: the level set's splat, the water spacing and full particle mass.
-  float vdbCellSize_ = 0.014f, vdbIso_ = 0.5f;
+  // OpenVDB's points: the water spacing and a full particle's mass.
   float waterSpacing_ = 0.02f, particleMass_ = 0.0082f;
 
   // Set by the first writeFrame: the simulation whose frames these are

@@ -1,12 +1,13 @@
 #include "Output/PlyFiles.h"
 
-#include <vtkPLY.h>
-
 #include <algorithm>
-#include <cstddef>
-#include <mutex>
-#include <sstream>
+#include <cstdint>
 #include <stdexcept>
+
+// The records are written in the host's byte order.
+#if !defined(__BYTE_ORDER__) || __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "PlyFiles.cpp writes little-endian PLY and assumes a little-endian host"
+#endif
 
 namespace soak {
 
@@ -17,6 +18,17 @@ std::array<unsigned char, 3> wetnessColour(float value) {
   return {mix(255.f, 20.f), mix(255.f, 60.f), mix(255.f, 160.f)};
 }
 
+namespace {
+template <class T>
+void append(std::string& out, const T& value) {
+  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+}  // namespace
+
+// The header names the properties in record order; each vertex is one
+// packed little-endian record (floats, then the colour bytes) and each face
+// a count byte and three int32s. The same bytes as vtkPLY's writer makes,
+// without its global state, so writer threads write PLY files at once.
 std::string clothPlyBytes(const ClothPlyFrame& f) {
   const std::size_t n = f.position.size();
   if (f.velocity.size() != n) throw std::logic_error("PLY: velocity count differs from position count");
@@ -25,67 +37,30 @@ std::string clothPlyBytes(const ClothPlyFrame& f) {
       throw std::logic_error("PLY: channel '" + c.name + "' has the wrong size");
   const bool colour = f.colourChannel >= 0 && f.colourChannel < int(f.channels.size());
 
-  // A vertex record: floats x y z vx vy vz and one per channel, then the
-  // three colour bytes. vtkPLY reads each property at its offset.
-  const std::size_t floats = 6 + f.channels.size();
-  const std::size_t colourOffset = floats * sizeof(float);
-  std::vector<std::string> names{"x", "y", "z", "vx", "vy", "vz"};
-  for (const PointArray& c : f.channels) names.push_back(c.name);
-  std::vector<PlyProperty> vertexProps;
-  for (std::size_t k = 0; k < floats; ++k)
-    vertexProps.push_back({names[k].c_str(), PLY_FLOAT, PLY_FLOAT, int(k * sizeof(float)), 0, 0, 0, 0});
-  if (colour) {
-    const char* rgb[3] = {"red", "green", "blue"};
-    for (int k = 0; k < 3; ++k) vertexProps.push_back({rgb[k], PLY_UCHAR, PLY_UCHAR, int(colourOffset) + k, 0, 0, 0, 0});
-  }
-  struct Face {
-    unsigned char count;
-    int* vertices;
-  };
-  PlyProperty faceProp{"vertex_indices", PLY_INT,   PLY_INT,  int(offsetof(Face, vertices)),
-                       1,                PLY_UCHAR, PLY_UCHAR, int(offsetof(Face, count))};
+  std::string out = "ply\nformat binary_little_endian 1.0\ncomment Soak cloth frame (Doc/output.md)\n"
+                    "obj_info soak cloth mesh\nelement vertex " + std::to_string(n) + "\n";
+  for (const char* name : {"x", "y", "z", "vx", "vy", "vz"}) out += std::string("property float ") + name + "\n";
+  for (const PointArray& c : f.channels) out += "property float " + c.name + "\n";
+  if (colour) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  out += "element face " + std::to_string(f.triangles.size()) + "\nproperty list uchar int vertex_indices\nend_header\n";
 
-  // vtkPLY keeps its allocations in one global heap that ply_close frees:
-  // one file at a time, whichever writer thread asks.
-  static std::mutex plyLibrary;
-  std::lock_guard<std::mutex> lock(plyLibrary);
-  std::string empty;
-  const char* elements[2] = {"vertex", "face"};
-  PlyFile* ply = vtkPLY::ply_open_for_writing_to_string(empty, 2, elements, PLY_BINARY_LE);
-  if (!ply) throw std::runtime_error("PLY: cannot start a file");
-  vtkPLY::ply_element_count(ply, "vertex", int(n));
-  for (PlyProperty& p : vertexProps) vtkPLY::ply_describe_property(ply, "vertex", &p);
-  vtkPLY::ply_element_count(ply, "face", int(f.triangles.size()));
-  vtkPLY::ply_describe_property(ply, "face", &faceProp);
-  // ply_close frees the comment and object-information lists, which
-  // ply_write leaves uninitialised until a first entry: one of each.
-  vtkPLY::ply_put_comment(ply, "Soak cloth frame (Doc/output.md)");
-  vtkPLY::ply_put_obj_info(ply, "soak cloth mesh");
-  vtkPLY::ply_header_complete(ply);
-  vtkPLY::ply_put_element_setup(ply, "vertex");
-  std::vector<float> record(floats + 1);  // the last float's bytes hold the colour
-  unsigned char* colourBytes = reinterpret_cast<unsigned char*>(record.data()) + colourOffset;
+  const std::size_t record = (6 + f.channels.size()) * sizeof(float) + (colour ? 3 : 0);
+  out.reserve(out.size() + n * record + f.triangles.size() * (1 + 3 * sizeof(std::int32_t)));
   for (std::size_t i = 0; i < n; ++i) {
-    float* v = record.data();
-    v[0] = f.position[i].x, v[1] = f.position[i].y, v[2] = f.position[i].z;
-    v[3] = f.velocity[i].x, v[4] = f.velocity[i].y, v[5] = f.velocity[i].z;
-    for (std::size_t c = 0; c < f.channels.size(); ++c) v[6 + c] = f.channels[c].values[i];
+    for (float v : {f.position[i].x, f.position[i].y, f.position[i].z, f.velocity[i].x, f.velocity[i].y,
+                    f.velocity[i].z})
+      append(out, v);
+    for (const PointArray& c : f.channels) append(out, c.values[i]);
     if (colour) {
       const auto rgb = wetnessColour(f.channels[std::size_t(f.colourChannel)].values[i]);
-      std::copy(rgb.begin(), rgb.end(), colourBytes);
+      out.append(reinterpret_cast<const char*>(rgb.data()), rgb.size());
     }
-    vtkPLY::ply_put_element(ply, record.data());
   }
-  vtkPLY::ply_put_element_setup(ply, "face");
   for (const auto& t : f.triangles) {
-    int vertices[3] = {t[0], t[1], t[2]};
-    Face face{3, vertices};
-    vtkPLY::ply_put_element(ply, &face);
+    append(out, static_cast<unsigned char>(3));
+    for (int v : t) append(out, static_cast<std::int32_t>(v));
   }
-  // The library writes to a string stream of its own, which ply_close deletes.
-  std::string bytes = static_cast<std::ostringstream*>(ply->os)->str();
-  vtkPLY::ply_close(ply);
-  return bytes;
+  return out;
 }
 
 void writeClothPly(const std::string& path, const ClothPlyFrame& frame) {

@@ -1,7 +1,10 @@
 #pragma once
 // Cloth as binary PLY, for Blender and Houdini (issue 26): one file per
-// frame and cloth, written through VTK's PLY library (vtkPLY: the writer
-// class cannot carry arbitrary vertex properties). Vertex properties:
+// frame and cloth. The format is a text header and packed records, written
+// here directly: VTK's writer class cannot carry arbitrary vertex
+// properties, and its PLY library keeps global state that would let only
+// one writer thread write at a time. The tests read the files back through
+// that library. Vertex properties:
 //   x y z              position (m)
 //   vx vy vz           velocity (m/s)
 //   <channel>          every particle channel (saturation, held_water, ...)

@@ -21,8 +21,7 @@ void initializeOpenVdb() {
 // level-set convention), then rebuilt by OpenVDB into a narrow band of
 // signed distances around its zero crossing. Grid points the splat never
 // touched hold the background (density 0: phi = iso) and stay inactive.
-openvdb::FloatGrid::Ptr surfaceLevelSet(const WaterVdbFrame& f, const WaterSurfaceSettings& s) {
-  const RelativeDensityGrid splat = splatRelativeDensity(f.position, f.mass, f.supportRadius, f.restDensity, s);
+openvdb::FloatGrid::Ptr surfaceLevelSet(const RelativeDensityGrid& splat, const WaterSurfaceSettings& s) {
   if (splat.values.empty()) {
     openvdb::FloatGrid::Ptr empty = openvdb::createLevelSet<openvdb::FloatGrid>(s.cellSize, kVdbHalfWidthVoxels);
     return empty;
@@ -69,10 +68,11 @@ openvdb::points::PointDataGrid::Ptr particleGrid(const WaterVdbFrame& f) {
 
 }  // namespace
 
-void writeWaterVdb(const std::string& path, const WaterVdbFrame& frame, const WaterSurfaceSettings& s) {
+void writeWaterVdb(const std::string& path, const WaterVdbFrame& frame, const RelativeDensityGrid& splat,
+                   const WaterSurfaceSettings& s) {
   initializeOpenVdb();
   openvdb::GridPtrVec grids;
-  openvdb::FloatGrid::Ptr surface = surfaceLevelSet(frame, s);
+  openvdb::FloatGrid::Ptr surface = surfaceLevelSet(splat, s);
   surface->setName("surface");
   grids.push_back(surface);
   openvdb::points::PointDataGrid::Ptr particles = particleGrid(frame);

@@ -17,10 +17,8 @@ namespace soak {
 
 struct WaterVdbFrame {
   std::vector<Vec3> position, velocity;
-  std::vector<float> mass, supportRadius;  // per particle, for the splat
   std::vector<int> id;
   std::vector<float> pointRadius;  // pscale (m)
-  float restDensity = 1000.f;
   float spacing = 0.02f;  // r0 (m): the points grid's voxel is 2 r0
 };
 
@@ -29,8 +27,11 @@ struct WaterVdbFrame {
 constexpr float kVdbHalfWidthVoxels = 3.f;
 
 // Writes `frame` to `path` through OpenVDB, under a temporary name renamed
-// into place (the file is complete or absent). The level set's voxel is
-// s.cellSize (or the coarser cell the splat takes for a very large grid).
-void writeWaterVdb(const std::string& path, const WaterVdbFrame& frame, const WaterSurfaceSettings& s);
+// into place (the file is complete or absent). The level set is that of
+// `splat` (splatRelativeDensity of the frame's particles with `s`) at
+// s.iso; its voxel is the splat's cell (s.cellSize, or the coarser cell the
+// splat takes for a very large grid).
+void writeWaterVdb(const std::string& path, const WaterVdbFrame& frame, const RelativeDensityGrid& splat,
+                   const WaterSurfaceSettings& s);
 
 }  // namespace soak

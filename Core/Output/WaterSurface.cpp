@@ -67,7 +67,10 @@ RelativeDensityGrid splatRelativeDensity(const std::vector<Vec3>& x, const std::
 vtkSmartPointer<vtkPolyData> buildWaterSurface(const std::vector<Vec3>& x, const std::vector<float>& mass,
                                                const std::vector<float>& radius, float rho0,
                                                const WaterSurfaceSettings& s) {
-  const RelativeDensityGrid grid = splatRelativeDensity(x, mass, radius, rho0, s);
+  return contourRelativeDensity(splatRelativeDensity(x, mass, radius, rho0, s), s.iso);
+}
+
+vtkSmartPointer<vtkPolyData> contourRelativeDensity(const RelativeDensityGrid& grid, float iso) {
   if (grid.values.empty()) return vtkSmartPointer<vtkPolyData>::New();
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(grid.nx, grid.ny, grid.nz);
@@ -80,7 +83,7 @@ vtkSmartPointer<vtkPolyData> buildWaterSurface(const std::vector<Vec3>& x, const
   image->GetPointData()->SetScalars(values);
   auto contour = vtkSmartPointer<vtkFlyingEdges3D>::New();
   contour->SetInputData(image);
-  contour->SetValue(0, s.iso);
+  contour->SetValue(0, iso);
   contour->ComputeNormalsOn();
   contour->ComputeScalarsOff();
   contour->Update();

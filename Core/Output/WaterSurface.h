@@ -35,6 +35,9 @@ struct RelativeDensityGrid {
 RelativeDensityGrid splatRelativeDensity(const std::vector<Vec3>& x, const std::vector<float>& mass,
                                          const std::vector<float>& radius, float rho0, const WaterSurfaceSettings& s);
 
+// The mesh where a splat equals `iso` (flying edges).
+vtkSmartPointer<vtkPolyData> contourRelativeDensity(const RelativeDensityGrid& grid, float iso);
+
 // The surface mesh of splatRelativeDensity at s.iso.
 vtkSmartPointer<vtkPolyData> buildWaterSurface(const std::vector<Vec3>& x, const std::vector<float>& mass,
                                                const std::vector<float>& radius, float rho0,

@@ -1,6 +1,6 @@
 // Export for Houdini and Blender (issue 26): the .vdb and .ply files read
-// back through the libraries that wrote them (OpenVDB; VTK's PLY library and
-// its reader), with the counts and values the simulation had.
+// back through libraries (OpenVDB; VTK's PLY library and its reader), with
+// the counts and values the simulation had.
 #include <gtest/gtest.h>
 
 #include <openvdb/openvdb.h>
@@ -119,7 +119,11 @@ PlyContents readPly(const std::string& path, const std::vector<std::string>& nam
   return out;
 }
 
-std::string sourcePath(const std::string& relative) { return std::string(SOAK_SOURCE_DIR) + "/" + relative; }
+// soak run Scenes/fig1_jet.xml on the CPU into `dir` with `options` added.
+test::SoakResult runFig1(const std::string& dir, const std::string& options) {
+  return test::runSoak("run " + std::string(SOAK_SOURCE_DIR) + "/Scenes/fig1_jet.xml -o " + dir +
+                       " --device cpu --quiet " + options);
+}
 
 }  // namespace
 
@@ -136,11 +140,10 @@ TEST(DccExport, VdbPointsCarryEveryParticleAndTheLevelSetEnclosesTheWater) {
         f.id.push_back(id + 7);
         f.pointRadius.push_back(0.01f + 1e-5f * id);
       }
-  f.mass.assign(f.position.size(), m);
-  f.supportRadius.assign(f.position.size(), h);
+  const std::vector<float> mass(f.position.size(), m), supportRadius(f.position.size(), h);
   WaterSurfaceSettings s;
   const std::string path = test::freshTempPath("vdb_block") + ".vdb";
-  writeWaterVdb(path, f, s);
+  writeWaterVdb(path, f, splatRelativeDensity(f.position, mass, supportRadius, 1000.f, s), s);
   const VdbContents read = readVdb(path);
   ASSERT_TRUE(read.surface);
   EXPECT_EQ(read.surface->getGridClass(), openvdb::GRID_LEVEL_SET);
@@ -166,7 +169,7 @@ TEST(DccExport, VdbPointsCarryEveryParticleAndTheLevelSetEnclosesTheWater) {
       break;
     }
   double bounds[6];
-  buildWaterSurface(f.position, f.mass, f.supportRadius, 1000.f, s)->GetBounds(bounds);
+  buildWaterSurface(f.position, mass, supportRadius, 1000.f, s)->GetBounds(bounds);
   std::printf("level set zero at x = %.4f m, mesh face at x = %.4f m (block face 0.2)\n", crossing, bounds[1]);
   EXPECT_NEAR(crossing, bounds[1], 0.5 * s.cellSize);
   // The level set is a distance: one cell further out, phi grows by about a cell.
@@ -176,7 +179,7 @@ TEST(DccExport, VdbPointsCarryEveryParticleAndTheLevelSetEnclosesTheWater) {
 
 TEST(DccExport, VdbWithoutWaterHoldsEmptyGrids) {
   const std::string path = test::freshTempPath("vdb_empty") + ".vdb";
-  writeWaterVdb(path, WaterVdbFrame{}, WaterSurfaceSettings{});
+  writeWaterVdb(path, WaterVdbFrame{}, RelativeDensityGrid{}, WaterSurfaceSettings{});
   const VdbContents read = readVdb(path);
   ASSERT_TRUE(read.surface);
   EXPECT_EQ(read.surface->activeVoxelCount(), 0u);
@@ -223,9 +226,7 @@ TEST(DccExport, Fig1SequencesMatchTheVtkFrames) {
   // the frame's water particles (ids, positions, velocities of the .vtu) and
   // every .ply the cloth vertices with the .vtp's saturation.
   const std::string dir = test::freshTempPath("fig1_export");
-  const test::SoakResult r = test::runSoak("run " + sourcePath("Scenes/fig1_jet.xml") + " -o " + dir +
-                                           " --device cpu --frames 3 --quiet --set Output.vdb=true"
-                                           " --set Output.ply=true");
+  const test::SoakResult r = runFig1(dir, "--frames 3 --set Output.vdb=true --set Output.ply=true");
   ASSERT_EQ(r.code, 0) << r.output;
   int framesWithWater = 0;
   for (int frame = 0; frame <= 3; ++frame) {
@@ -272,9 +273,7 @@ TEST(DccExport, Fig1SequencesMatchTheVtkFrames) {
 
 TEST(DccExport, UnknownColourChannelIsRefusedWithTheChannelsThereAre) {
   const std::string dir = test::freshTempPath("ply_colour");
-  const test::SoakResult r = test::runSoak("run " + sourcePath("Scenes/fig1_jet.xml") + " -o " + dir +
-                                           " --device cpu --frames 1 --quiet --set Output.ply=true"
-                                           " --set Output.plyColour=wetness");
+  const test::SoakResult r = runFig1(dir, "--frames 1 --set Output.ply=true --set Output.plyColour=wetness");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("plyColour 'wetness'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("saturation"), std::string::npos) << r.output;
