@@ -431,6 +431,17 @@ std::vector<ClothStrain> ClothSystem::strain(const std::vector<Float4>& position
   return out;
 }
 
+std::vector<float> ClothSystem::vertexRestAreas() const {
+  std::vector<float> area(restPosition_.size(), 0.f);
+  for (const ClothTriangle& t : triangles_) {
+    const Vec3 a = restPosition_[std::size_t(t.v[0])], b = restPosition_[std::size_t(t.v[1])],
+               c = restPosition_[std::size_t(t.v[2])];
+    const float third = length(cross(b - a, c - a)) / 6.f;
+    for (int k = 0; k < 3; ++k) area[std::size_t(t.v[k])] += third;
+  }
+  return area;
+}
+
 std::vector<Vec3> ClothSystem::downloadVertexPositions(const ParticleState& particles, int clothIndex) const {
   const ClothObject& obj = objects_[clothIndex];
   std::vector<Float4> pos = particles.downloadPositions();

@@ -215,6 +215,9 @@ class ClothSystem {
     const int jacobi = anyJacobi() ? iterations + (jacobiBendCount_ > 0 ? 1 : 0) : 0;
     return substeps * (coloured + jacobi);
   }
+  // Each vertex's share of its cloth's rest area (a third of each of its
+  // triangles), m^2, indexed by vertex.
+  std::vector<float> vertexRestAreas() const;
   // Host copy of the positions of one cloth's vertices, in vertex order.
   std::vector<Vec3> downloadVertexPositions(const ParticleState& particles, int clothIndex) const;
 

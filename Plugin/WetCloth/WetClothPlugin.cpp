@@ -14,6 +14,7 @@
 #include "Pipeline/StageNames.h"
 #include "Plugins/PluginApi.h"
 #include "Simulation/Simulation.h"
+#include "Drying.h"
 #include "FickDiffusion.h"
 #include "WetPhysics.h"
 
@@ -22,8 +23,8 @@ namespace {
 
 class WetClothModule : public Module {
  public:
-  WetClothModule(const WetParams& params, std::string where)
-      : w_(params), where_(std::move(where)) {}
+  WetClothModule(const WetParams& params, const DryingParams& drying, std::string where)
+      : w_(params), drying_(drying), where_(std::move(where)) {}
 
   void setup(Simulation& sim) override {
     if (sim.cloth.empty()) throw InputError("<WetCloth>: the scene has no <Cloth> to wet", where_);
@@ -59,6 +60,11 @@ class WetClothModule : public Module {
     dripRoomCap_ = std::max(kMinDripRoom, sim.cloth.vertexCount() / 32);
     maxListCapacity_ = sim.maxListCapacity(sim.cloth.vertexCount());
     dryMass_.upload(dry);
+    if (drying_.fluxIntoDryAir > 0.f) {
+      evaporated_ = ps.addChannel("evaporated_water");
+      vertexArea_ = Buffer<float>(sim.device());
+      vertexArea_.upload(sim.cloth.vertexRestAreas());
+    }
     // kappa_couple (Eq. 22), the core's field that its coupling stage reads.
     kappa_ = sim.vertexFields.get(field::kCouplingStiffness, vertices, 1.f);
     ref_.mass = sim.water.particleMass;
@@ -77,6 +83,8 @@ class WetClothModule : public Module {
     pipeline.insertAfter("wet.absorb", {"wet.diffuse", [this](Simulation& s) { diffuse(s); }});
     pipeline.insertAfter("wet.diffuse", {"wet.emit", [this](Simulation& s) { emit(s); }});
     pipeline.insertAfter("wet.emit", {"wet.stick", [this](Simulation& s) { stick(s); }});
+    if (drying_.fluxIntoDryAir > 0.f)
+      pipeline.insertAfter("wet.stick", {"wet.dry", [this](Simulation& s) { dryOut(s); }});
   }
 
   void beforeStep(Simulation& sim) override {
@@ -148,7 +156,12 @@ class WetClothModule : public Module {
     const double buffered = bufferSum + double(drips.pending) * double(w_.mThreshold);
     row.add("held_water_mass", heldSum);
     row.add("buffered_water_mass", buffered);
-    row.add("total_water_mass", row.get("free_water_mass") + heldSum + buffered + row.get("drained_water_mass"));
+    double evaporated = 0.0;
+    if (evaporated_ >= 0)
+      for (float v : frame.channels.at(std::size_t(evaporated_))) evaporated += v;
+    row.add("evaporated_water_mass", evaporated);
+    row.add("total_water_mass",
+            row.get("free_water_mass") + heldSum + buffered + row.get("drained_water_mass") + evaporated);
     row.add("max_saturation", maxSaturation);
     row.add("drips_spawned", double(drips.spawned));
     row.add("drips_deferred", double(drips.deferred));
@@ -216,6 +229,10 @@ class WetClothModule : public Module {
     takenRoom_ = dripRoom_;
     attractDrips(s.device(), p, s.grid.view(), a, w_, ref_, float(s.settings.timeStep));
   }
+  void dryOut(Simulation& s) {
+    evaporateWater(s.device(), s.particles.view(), arrays(s), vertexArea_.data(), s.particles.channel(evaporated_),
+                   drying_, w_.c, float(s.settings.timeStep));
+  }
   void stick(Simulation& s) {
     if (!w_.sticking) return;
     stickWetCloth(s.device(), s.particles.view(), s.cloth.view(), arrays(s), w_,
@@ -272,9 +289,12 @@ class WetClothModule : public Module {
 
  private:
   WetParams w_;
+  DryingParams drying_;
   std::string where_;
   WaterReference ref_;
   int held_ = -1, buffer_ = -1, saturation_ = -1, volume_ = -1;
+  int evaporated_ = -1;       // channel of the water each particle gave to the air (drying on)
+  Buffer<float> vertexArea_;  // per vertex: rest area (drying on)
   Buffer<float> dryMass_, scratchA_, scratchB_, scratchC_;
   float* kappa_ = nullptr;  // the core's field::kCouplingStiffness
   Buffer<Vec3> delta_;
@@ -321,6 +341,14 @@ WetParams paramsFrom(const ElementParams& e) {
   w.sticking = e.boolean("sticking");
   w.wetWeight = e.boolean("wetWeight");
   return w;
+}
+
+DryingParams dryingFrom(const ElementParams& e) {
+  DryingParams d;
+  d.fluxIntoDryAir = e.realf("dryingRate");
+  d.ambientHumidity = e.realf("ambientHumidity");
+  d.criticalSaturation = e.realf("dryingCriticalSaturation");
+  return d;
 }
 
 }  // namespace
@@ -397,9 +425,20 @@ SOAK_PLUGIN(WetCloth) {
           .boolean("emission", "true", "Buffers, drips and drip attraction (Section 4.4).")
           .boolean("sticking", "true", "Wet cloth sticking (Eq. 20).")
           .boolean("wetWeight", "true", "Held and buffered water add to the cloth particle's mass.")
+          .real("dryingRate", "kg/(m^2 s)", "0",
+                "Beyond the paper: evaporation per area of cloth into dry air while the fabric is wetter than "
+                "dryingCriticalSaturation (0: no drying). Held water leaves at dryingRate x (1 - ambientHumidity) "
+                "per area, falling in proportion to S below the critical saturation; stats.csv counts it in "
+                "evaporated_water_mass (Doc/model.md, 'Drying').",
+                0.0, 1e3)
+          .real("ambientHumidity", "", "0.5", "Relative humidity of the air the cloth dries into, 0 to 1.", 0.0, 1.0)
+          .real("dryingCriticalSaturation", "", "0.1",
+                "Saturation below which drying slows in proportion to the water left (the falling-rate period).",
+                0.0, 1.0)
           .makeUnique()
           .create([](const soak::ElementParams& e) {
-            auto m = std::make_unique<soak::wet::WetClothModule>(soak::wet::paramsFrom(e), e.where());
+            auto m = std::make_unique<soak::wet::WetClothModule>(soak::wet::paramsFrom(e), soak::wet::dryingFrom(e),
+                                                                 e.where());
             m->initialSaturation_ = e.realf("initialSaturation");
             if (m->initialSaturation_ > e.realf("sMax"))
               throw soak::InputError("<WetCloth>: initialSaturation must not exceed sMax", e.where());
