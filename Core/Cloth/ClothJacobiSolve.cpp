@@ -10,14 +10,28 @@
 namespace soak {
 
 namespace {
-// Vertex v's position x limited by its tethers (pins' positions from `at`).
-SOAK_INLINE Vec3 clampToTethers(const ClothView& c, int v, const Float4* at, Vec3 x) {
-  const TetherPins pins = loadReadOnly(reinterpret_cast<const TetherPins*>(c.tetherPin) + v);
-  if (pins.pin[0] < 0) return x;
-  const TetherLengths lengths = loadReadOnly(reinterpret_cast<const TetherLengths*>(c.tetherLength) + v);
-  for (int t = 0; t < kTethers && pins.pin[t] >= 0; ++t) x = clampToTether(x, at[pins.pin[t]].xyz(), lengths.length[t]);
-  return x;
-}
+// A vertex's tethers: their lengths and their pins' positions, loaded
+// before they are needed so that the loads overlap other work.
+struct VertexTethers {
+  int count = 0;
+  float length[kTethers] = {};
+  Vec3 anchor[kTethers];
+  SOAK_INLINE VertexTethers(const ClothView& c, int v, const Float4* at) {
+    const TetherPins pins = loadReadOnly(reinterpret_cast<const TetherPins*>(c.tetherPin) + v);
+    if (pins.pin[0] < 0) return;
+    const TetherLengths lengths = loadReadOnly(reinterpret_cast<const TetherLengths*>(c.tetherLength) + v);
+    for (int t = 0; t < kTethers && pins.pin[t] >= 0; ++t) {
+      length[t] = lengths.length[t];
+      anchor[t] = at[pins.pin[t]].xyz();
+      count = t + 1;
+    }
+  }
+  // x limited by every tether.
+  SOAK_INLINE Vec3 clamp(Vec3 x) const {
+    for (int t = 0; t < count; ++t) x = clampToTether(x, anchor[t], length[t]);
+    return x;
+  }
+};
 
 // The stages of one sub-step's solve, in order: gather the predicted
 // positions, the bend pass (if any bends), the iterations, scatter back.
@@ -36,8 +50,10 @@ struct JacobiLaunch {
 };
 
 // Lanes per vertex: a vertex's spring list (edges and stretch limits, about
-// 30 on a large sheet) is split over them.
-constexpr int kJacobiLanes = 8;
+// 30 on a large sheet) is split over them. 4 is measured fastest on the
+// H100 (cloth.solve fig6b 3.30 / 3.16 / 3.69 ms at 2 / 4 / 8 lanes,
+// Doc/performance.md).
+constexpr int kJacobiLanes = 4;
 }  // namespace
 
 void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho) {
@@ -113,7 +129,12 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
             if (l.leader()) out[v] = xv;
             return;
           }
+          // Everything the leader needs after the lane sum, loaded first:
+          // the loop's loads then hide their latency.
           const Vec3 xi = xv.xyz();
+          const Vec3 y = target[v].xyz();
+          const Vec3 older = out[v].xyz();  // x_{k-1}
+          const VertexTethers tethers(c, v, x);
           JacobiSums sums;
           for (int e = c.springStart[v] + l.index, end = c.springStart[v + 1]; e < end; e += l.size) {
             const JacobiSpring sp = loadReadOnly(c.springs + e);
@@ -122,21 +143,21 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
           sums.weighted = laneSum(l, sums.weighted);
           sums.weight = laneSum(l, sums.weight);
           if (!l.leader()) return;
-          Vec3 xhat = jacobiMinimum(sums, target[v].xyz(), invH2 / xv.w);
+          Vec3 xhat = jacobiMinimum(sums, y, invH2 / xv.w);
           // Tethers as hard limits on the Jacobi step's result: their pins
           // do not move during the solve, so the projection needs no other
           // vertex's new position and costs no phase; it carries the pins'
           // hold across the sheet in one iteration (Kim et al. 2012).
-          xhat = clampToTethers(c, v, x, xhat);
+          xhat = tethers.clamp(xhat);
           // Chebyshev: x_{k+1} = omega (xhat - x_{k-1}) + x_{k-1}.
-          const Vec3 before = launch.iteration[local] == 1 ? xhat : out[v].xyz();
+          const Vec3 before = launch.iteration[local] == 1 ? xhat : older;
           out[v] = Float4(before + (xhat - before) * launch.omega[local], xv.w);
           return;
         }
         case kScatter: {
           if (!l.leader()) return;
           const Float4 xv = x[v];
-          p.predicted[c.vertexSlot[v]] = xv.w == 0.f ? xv : Float4(clampToTethers(c, v, x, xv.xyz()), xv.w);
+          p.predicted[c.vertexSlot[v]] = xv.w == 0.f ? xv : Float4(VertexTethers(c, v, x).clamp(xv.xyz()), xv.w);
           return;
         }
       }
