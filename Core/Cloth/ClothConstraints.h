@@ -15,6 +15,19 @@ struct alignas(8) ConstraintStiffness {
   float compliance = -1.f;
 };
 
+// k made `scale` times as stiff (scale in [0, 1]: softer): PBD's kPrime
+// times it, XPBD's compliance over it.
+SOAK_INLINE ConstraintStiffness scaledStiffness(ConstraintStiffness k, float scale) {
+  if (k.compliance < 0.f) k.kPrime *= scale;
+  else k.compliance = scale > 1e-6f ? k.compliance / scale : 1e30f;
+  return k;
+}
+
+// Mean of a per-vertex factor over a bend's four vertices (1 without one).
+SOAK_INLINE float bendScaleOf(const float* perVertex, const int v[4]) {
+  return perVertex ? 0.25f * (perVertex[v[0]] + perVertex[v[1]] + perVertex[v[2]] + perVertex[v[3]]) : 1.f;
+}
+
 // Eq. 5: the stiffness applied in each of n_s iterations.
 SOAK_INLINE float perIterationStiffness(float k, int iterations) {
   return 1.f - powf(1.f - minf(maxf(k, 0.f), 1.f), 1.f / float(iterations > 0 ? iterations : 1));

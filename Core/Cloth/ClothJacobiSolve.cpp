@@ -116,7 +116,7 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
                 w[a] = xa.w;
               }
               addBendCorrection(sum, count, q, w, ref.role, loadReadOnly(c.jacobiBendRest + ref.bend),
-                                loadReadOnly(c.jacobiBendStiffness + ref.bend));
+                                loadReadOnly(c.jacobiBendStiffness + ref.bend) * bendScaleOf(c.bendScale, bend.v));
             }
           sum = laneSum(l, sum);
           count = laneSum(l, count);

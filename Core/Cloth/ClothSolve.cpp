@@ -80,7 +80,8 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
         q[a] = xa.xyz();
         w[a] = xa.w;
       }
-      projectBend(q, w, loadReadOnly(c.bendRest + b), loadReadOnly(c.bendStiffness + b), dt, c.bendLambda[b], dx);
+      const ConstraintStiffness k = scaledStiffness(loadReadOnly(c.bendStiffness + b), bendScaleOf(c.bendScale, bend.v));
+      projectBend(q, w, loadReadOnly(c.bendRest + b), k, dt, c.bendLambda[b], dx);
       for (int a = 0; a < 4; ++a) x[bend.v[a]] = Float4(q[a] + dx[a], w[a]);
     }
   }, "cloth.constraints");
@@ -130,7 +131,9 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
       const Float4 xp = p.predicted[i];
       if (xp.w == 0.f) return;
       const float r = collisionRadiusScale * p.radius[i];
-      p.predicted[i] = Float4(projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, h), xp.w);
+      const float friction = c.frictionScale ? c.frictionScale[v] : 1.f;
+      p.predicted[i] =
+          Float4(projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, h, friction), xp.w);
     }, "cloth.substep.colliders");
     contacts(substepView);
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {

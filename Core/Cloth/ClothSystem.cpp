@@ -257,6 +257,8 @@ void ClothSystem::uploadJacobi() {
 
 ClothView ClothSystem::view() {
   ClothView v;
+  v.bendScale = bendScale_;
+  v.frictionScale = frictionScale_;
   v.edges = dEdges_.data();
   v.edgeRest = dEdgeRest_.data();
   v.edgeStiffness = dEdgeStiffness_.data();

@@ -108,6 +108,9 @@ struct ClothView {
   const ClothBend* jacobiBends = nullptr;
   const float* jacobiBendRest = nullptr;
   const float* jacobiBendStiffness = nullptr;  // kPrime of Eq. 5 per sub-step
+  // Per vertex, from the published fields (Cloth/VertexFields.h); null: 1.
+  const float* bendScale = nullptr;      // field::kBendStiffnessScale
+  const float* frictionScale = nullptr;  // field::kFrictionScale
   bool anyJacobiBends = false;
   const unsigned char* solvedByJacobi = nullptr;  // per vertex: 1 for a chebyshev cloth's vertex
   int jacobiVertexCount = 0;
@@ -189,6 +192,12 @@ class ClothSystem {
   // cloth particles in the same order as through the full grid, without
   // stepping over the water around them.
   GridView grid() const { return clothGrid_; }
+  // The published per-vertex fields the solves read (null where no stage
+  // made them); view() carries them.
+  void setFieldViews(const float* bendScale, const float* frictionScale) {
+    bendScale_ = bendScale;
+    frictionScale_ = frictionScale;
+  }
   // Zeroes the XPBD multipliers (start of each step).
   void resetMultipliers();
   // Largest relative edge strain |l - l0| / l0 over all edges (a reduction:
@@ -225,6 +234,8 @@ class ClothSystem {
   void uploadJacobi();
   Device device_;
   std::vector<ClothObject> objects_;
+  const float* bendScale_ = nullptr;
+  const float* frictionScale_ = nullptr;
   // Host staging, in creation order until upload() colours them.
   std::vector<ClothEdge> edges_;
   std::vector<float> edgeRest_;

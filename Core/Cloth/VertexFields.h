@@ -16,6 +16,14 @@ namespace field {
 // water out of the cloth at each vertex; without the field, 1 everywhere
 // (dry cloth). WetCloth's wet.volume writes it before the coupling stage.
 inline constexpr const char* kCouplingStiffness = "coupling_stiffness";
+// Factor on each bend's stiffness (Eq. 9; the mean of its four vertices'
+// values), read by both cloth solvers; without the field, 1. WetCloth's
+// wet.volume writes it where wetBendSoftening > 0 (wet cloth bends easier).
+inline constexpr const char* kBendStiffnessScale = "bend_stiffness_scale";
+// Factor on the friction of colliders against a cloth vertex (the
+// collider's fraction of tangential motion removed, times this, at most 1);
+// without the field, 1. WetCloth writes it where wetFriction > 0.
+inline constexpr const char* kFrictionScale = "friction_scale";
 }  // namespace field
 
 class VertexFields {

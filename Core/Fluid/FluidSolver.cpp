@@ -80,6 +80,7 @@ struct CorrectionConstants {
   const Collider* colliders;
   int colliderCount;
   const WallDensityTable* wall;
+  const float* clothFrictionScale;  // per cloth vertex (field::kFrictionScale); null: 1
 };
 
 // dx of every water particle and of the cloth particles it touches, from the
@@ -94,6 +95,7 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
   const Collider* colliders = k.colliders;
   const int colliderCount = k.colliderCount;
   const WallDensityTable wall = *k.wall;
+  const float* clothFriction = k.clothFrictionScale;
     // Position corrections of water particles and of the cloth they touch.
   forEachLanes<kFluidPassBlocks>(d, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
     const int phi = p.phase[i];
@@ -149,7 +151,8 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
       if (dx.x != 0.f || dx.y != 0.f || dx.z != 0.f) x = Float4(x.xyz() + dx, x.w);
       if (colliderCount > 0)
         x = Float4(projectOutOfColliders(colliders, colliderCount, p.position[i].xyz(), x.xyz(),
-                                         kCollisionRadiusScale * p.radius[i], dt),
+                                         kCollisionRadiusScale * p.radius[i], dt,
+                                         clothFriction && isCloth(phi) ? clothFriction[p.id[i]] : 1.f),
                    x.w);
     }
     next[i] = x;
@@ -176,7 +179,8 @@ void FluidSolver::solve(Simulation& sim) {
   const int colliderCount = int(sim.colliders.size());
   const WallDensityTable wall = wall_;
   const CorrectionConstants k{rho0, m0, corrK, corrQ, 1.f / (rho0 * m0), float(sim.settings.timeStep),
-                              colliders, colliderCount, &wall_};
+                              colliders, colliderCount, &wall_,
+                              sim.vertexFields.find(field::kFrictionScale)};
   float* lam = lambda_.data();
   float* rho = density_.data();
   const float* volume = volume_.data();

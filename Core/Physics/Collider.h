@@ -79,7 +79,9 @@ SOAK_INLINE float colliderDistance(const Collider& c, Vec3 p, Vec3& normal) {
 // Projects predicted position xp (previous position x) out of the collider
 // with margin r; applies Coulomb-like friction by removing a fraction of the
 // tangential displacement. Returns the corrected position.
-SOAK_INLINE Vec3 projectOutOfCollider(const Collider& c, Vec3 x, Vec3 xp, float r, float dt) {
+// frictionScale multiplies the collider's friction (at most 1 in all).
+SOAK_INLINE Vec3 projectOutOfCollider(const Collider& c, Vec3 x, Vec3 xp, float r, float dt,
+                                      float frictionScale = 1.f) {
   Vec3 n;
   Vec3 corrected;
   if (c.shape == kColliderBox && c.inside) {
@@ -96,12 +98,13 @@ SOAK_INLINE Vec3 projectOutOfCollider(const Collider& c, Vec3 x, Vec3 xp, float 
   // Friction on the displacement relative to the collider's surface motion.
   Vec3 disp = corrected - x - c.velocity * dt;
   Vec3 tangential = disp - n * dot(disp, n);
-  return corrected - tangential * c.friction;
+  return corrected - tangential * fminf(c.friction * frictionScale, 1.f);
 }
 
 // Every collider in turn (each sees the previous one's correction).
-SOAK_INLINE Vec3 projectOutOfColliders(const Collider* colliders, int count, Vec3 x, Vec3 xp, float r, float dt) {
-  for (int c = 0; c < count; ++c) xp = projectOutOfCollider(colliders[c], x, xp, r, dt);
+SOAK_INLINE Vec3 projectOutOfColliders(const Collider* colliders, int count, Vec3 x, Vec3 xp, float r, float dt,
+                                       float frictionScale = 1.f) {
+  for (int c = 0; c < count; ++c) xp = projectOutOfCollider(colliders[c], x, xp, r, dt, frictionScale);
   return xp;
 }
 

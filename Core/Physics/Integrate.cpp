@@ -1,6 +1,7 @@
 #include "Physics/Integrate.h"
 
 #include "Backend/ForEach.h"
+#include "Particles/Phase.h"
 
 namespace soak {
 
@@ -20,14 +21,15 @@ void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Ve
 }
 
 void projectColliders(Device d, ParticleView p, const Collider* colliders, int colliderCount, float radiusScale,
-                      float dt) {
+                      float dt, const float* clothFrictionScale) {
   if (colliderCount == 0) return;
   forEach(d, p.count, SOAK_LAMBDA(int i) {
     Float4 xp = p.predicted[i];
     if (xp.w == 0.f) return;
     const Vec3 x = p.position[i].xyz();
     const float r = radiusScale * p.radius[i];
-    p.predicted[i] = Float4(projectOutOfColliders(colliders, colliderCount, x, xp.xyz(), r, dt), xp.w);
+    const float friction = clothFrictionScale && isCloth(p.phase[i]) ? clothFrictionScale[p.id[i]] : 1.f;
+    p.predicted[i] = Float4(projectOutOfColliders(colliders, colliderCount, x, xp.xyz(), r, dt, friction), xp.w);
   }, "colliders");
 }
 

@@ -16,9 +16,11 @@ constexpr float kCollisionRadiusScale = 0.25f;
 void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Vec3* accel = nullptr);
 
 // Projects predicted positions out of every collider; collision radius of a
-// particle is `radiusScale` times its support radius.
+// particle is `radiusScale` times its support radius. `clothFrictionScale`
+// (per cloth vertex, by the particle's id; null: 1) multiplies the
+// colliders' friction against cloth particles.
 void projectColliders(Device d, ParticleView p, const Collider* colliders, int colliderCount, float radiusScale,
-                      float dt);
+                      float dt, const float* clothFrictionScale = nullptr);
 
 // x* += delta for each of the `count` particles whose slots are listed in
 // `slots` (the cloth's, say) that moves (inverse mass > 0): the second half

@@ -65,6 +65,8 @@ void Simulation::addCoreStages() {
   pipeline.append({stage::kFluidSolve, [](Simulation& s) { s.fluid.solve(s); }});
   pipeline.append({stage::kClothSolve, [](Simulation& s) {
                      if (s.cloth.empty()) return;
+                     s.cloth.setFieldViews(s.vertexFields.find(field::kBendStiffnessScale),
+                                           s.vertexFields.find(field::kFrictionScale));
                      ParticleView p = s.particles.view();
                      ClothView c = s.cloth.view();
                      s.contactDelta_.resize(p.count);
@@ -93,13 +95,13 @@ void Simulation::addCoreStages() {
                                       s.settings.clothSpectralRadius);
                      // Colliders first, so that contact sees a layer resting on the floor where it is.
                      projectColliders(s.device(), p, s.deviceColliders(), int(s.colliders.size()),
-                                      kCollisionRadiusScale, float(s.settings.timeStep));
+                                      kCollisionRadiusScale, float(s.settings.timeStep), c.frictionScale);
                      contacts(p);
                    }});
   pipeline.append({stage::kCollide, [](Simulation& s) {
                      projectColliders(s.device(), s.particles.view(), s.deviceColliders(),
                                       static_cast<int>(s.colliders.size()), kCollisionRadiusScale,
-                                      s.settings.timeStep);
+                                      s.settings.timeStep, s.vertexFields.find(field::kFrictionScale));
                    }});
   pipeline.append({stage::kCoupling, [](Simulation& s) {
                      if (s.cloth.empty()) return;

@@ -67,6 +67,8 @@ class WetClothModule : public Module {
     }
     // kappa_couple (Eq. 22), the core's field that its coupling stage reads.
     kappa_ = sim.vertexFields.get(field::kCouplingStiffness, vertices, 1.f);
+    if (w_.wetBendSoftening > 0.f) bendScale_ = sim.vertexFields.get(field::kBendStiffnessScale, vertices, 1.f);
+    if (w_.wetFriction > 0.f) frictionScale_ = sim.vertexFields.get(field::kFrictionScale, vertices, 1.f);
     ref_.mass = sim.water.particleMass;
     ref_.supportRadius = sim.water.supportRadius;
     ref_.gravity = length(sim.settings.gravity);
@@ -183,6 +185,8 @@ class WetClothModule : public Module {
     a.scratchC = scratchC_.data();
     a.delta = delta_.data();
     a.kappaCouple = kappa_;
+    a.bendScale = bendScale_;
+    a.frictionScale = frictionScale_;
     a.dryMass = dryMass_.data();
     a.cloth = clothSlots(sim.cloth.view());
     a.clothGrid = sim.cloth.grid();
@@ -297,6 +301,8 @@ class WetClothModule : public Module {
   Buffer<float> vertexArea_;  // per vertex: rest area (drying on)
   Buffer<float> dryMass_, scratchA_, scratchB_, scratchC_;
   float* kappa_ = nullptr;  // the core's field::kCouplingStiffness
+  float* bendScale_ = nullptr;      // the core's field::kBendStiffnessScale (wetBendSoftening > 0)
+  float* frictionScale_ = nullptr;  // the core's field::kFrictionScale (wetFriction > 0)
   Buffer<Vec3> delta_;
   static constexpr int kMinDripRoom = 8;
   Buffer<int> due_, dripOffset_;
@@ -340,6 +346,8 @@ WetParams paramsFrom(const ElementParams& e) {
   w.emission = e.boolean("emission");
   w.sticking = e.boolean("sticking");
   w.wetWeight = e.boolean("wetWeight");
+  w.wetBendSoftening = e.realf("wetBendSoftening");
+  w.wetFriction = e.realf("wetFriction");
   return w;
 }
 
@@ -425,6 +433,15 @@ SOAK_PLUGIN(WetCloth) {
           .boolean("emission", "true", "Buffers, drips and drip attraction (Section 4.4).")
           .boolean("sticking", "true", "Wet cloth sticking (Eq. 20).")
           .boolean("wetWeight", "true", "Held and buffered water add to the cloth particle's mass.")
+          .real("wetBendSoftening", "", "0",
+                "Beyond the paper: saturated cloth (S = sMax) bends with 1 - wetBendSoftening of its dry bend "
+                "stiffness, in proportion to S / sMax between (0: the paper's, wet cloth as stiff as dry; "
+                "Doc/model.md, 'Wet stiffness and friction').",
+                0.0, 1.0)
+          .real("wetFriction", "", "0",
+                "Beyond the paper: colliders grip saturated cloth with 1 + wetFriction times their friction, in "
+                "proportion to S / sMax between (at most 1 in all; 0: the paper's).",
+                0.0, 100.0)
           .real("dryingRate", "kg/(m^2 s)", "0",
                 "Beyond the paper: evaporation per area of cloth into dry air while the fabric is wetter than "
                 "dryingCriticalSaturation (0: no drying). Held water leaves at dryingRate x (1 - ambientHumidity) "

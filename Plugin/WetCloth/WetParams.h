@@ -45,6 +45,11 @@ struct WetParams {
   float etaAd = -1.f;          // Eq. 20 (N); < 0: kappaAd * S^T^2 (no pull between dry particles)
   float clothRestDensity = 800.f;  // Table 1, for Psi of Eq. 19
   bool emission = true, sticking = true, wetWeight = true;
+  // Beyond the paper (Doc/model.md, "Wet stiffness and friction"): at
+  // saturation S the bends are 1 - wetBendSoftening S / S^MAX as stiff and
+  // colliders grip 1 + wetFriction S / S^MAX times as hard.
+  float wetBendSoftening = 0.f;
+  float wetFriction = 0.f;
 };
 
 // A cloth particle whose buffer is below kBufferFloor x m_threshold counts

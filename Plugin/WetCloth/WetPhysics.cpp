@@ -59,6 +59,7 @@ SOAK_INLINE float transferWeight(Vec3 xk, float hk, Vec3 xi, float hi, Vec3 g) {
 void updatePorosity(Device d, ParticleView p, WetArrays a, const WetParams& w) {
   const float sEW = w.sEW, c = w.c, sT = w.sT, sMax = w.sMax;
   const bool wetWeight = w.wetWeight;
+  const float bendSoftening = w.wetBendSoftening, wetFriction = w.wetFriction;
   const ClothListWalk lists{a.clothNeighbours};
   // One pass: the volume over the cloth's lists (which read positions, not
   // the masses and inverse masses this pass writes), then the rest.
@@ -82,6 +83,10 @@ void updatePorosity(Device d, ParticleView p, WetArrays a, const WetParams& w) {
     // buffered: cloth with excess water is the wettest (Doc/model.md).
     const float wetness = minf(saturationOf(c, held + a.buffer[i], V), sMax);
     a.kappaCouple[vertex] = couplingStiffnessOf(wetness, sT, sMax);
+    // Wet cloth bends easier and grips colliders harder (Doc/model.md,
+    // "Wet stiffness and friction"), in proportion to S / S^MAX.
+    if (a.bendScale) a.bendScale[vertex] = 1.f - bendSoftening * wetness / sMax;
+    if (a.frictionScale) a.frictionScale[vertex] = 1.f + wetFriction * wetness / sMax;
     if (wetWeight) {
       // Held and buffered water weigh on the cloth particle (the paper's rho0* = (m_i + m_j) / m_i).
       const float m = a.dryMass[vertex] + held + a.buffer[i];

@@ -25,6 +25,8 @@ struct WetArrays {
   float* scratchC = nullptr;
   Vec3* delta = nullptr;
   float* kappaCouple = nullptr;
+  float* bendScale = nullptr;      // per vertex, the core's field::kBendStiffnessScale (null: not made)
+  float* frictionScale = nullptr;  // per vertex, the core's field::kFrictionScale (null: not made)
   const float* dryMass = nullptr;
   ClothSlots cloth;  // the cloth particles' slots: the cloth-side passes walk these only
   GridView clothGrid;  // the grid over the cloth particles alone: queries for cloth neighbours use it
@@ -41,8 +43,9 @@ struct WaterReference {
 };
 
 // wet.volume: V_i (Eq. 10's volume), water above S^EW moved from the fabric
-// to the buffer (Section 4.4), S_i, kappa_couple per vertex (Eq. 22), and the
-// particle mass m_dry + held + buffer (wet weight).
+// to the buffer (Section 4.4), S_i, kappa_couple per vertex (Eq. 22), the
+// particle mass m_dry + held + buffer (wet weight), and where they are made,
+// the bend stiffness and friction factors of wet cloth.
 void updatePorosity(Device d, ParticleView p, WetArrays a, const WetParams& w);
 
 // wet.absorb (Eq. 11): water particles give water to the cloth particles
