@@ -28,7 +28,7 @@ float cantileverTip(const std::string& model, double saturation, double softenin
       "<Scene><Simulation clothSubsteps='4' clothIterations='12'/><Water/>"
       "<Cloth name='strip' model='" + model + "' origin='0 1 0' axisU='1 0 0' axisV='0 0 1' width='0.2' "
       "height='0.06' cellsU='" + std::to_string(cellsU) + "' cellsV='" + std::to_string(cellsV) +
-          "' bendStiffness='1' tethers='false' pin='" + pins + "'/>"
+          "' tethers='false' pin='" + pins + "'/>"
           "<WetCloth initialSaturation='" + std::to_string(saturation) +
           "' wetWeight='false' emission='false' sticking='false' diffusionIterations='0' wetBendSoftening='" +
           std::to_string(softening) + "'/></Scene>",
@@ -76,17 +76,19 @@ float slideDistance(double saturation, double wetFriction) {
 }  // namespace
 
 TEST(WetStiffness, AWetStripBendsLowerThanADryOneOfTheSameWeight) {
-  // The paper's solver, whose bends hold the strip up (chebyshev's one bend
-  // pass a sub-step barely does: its strip hangs about as low with bending
-  // as without, Doc/model.md, so softening has little to act on there).
-  for (const char* model : {"pbd"}) {
+  // XPBD, whose bends have a physical stiffness (compliance 1/(N m), the
+  // default): the paper's PBD holds the strip at bendStiffness 1 only by
+  // overshooting (edge strain above 100 % at the clamp) and not at all at
+  // 0.5, and chebyshev's one bend pass a sub-step barely holds it
+  // (Doc/model.md, "Wet stiffness and friction").
+  for (const char* model : {"xpbd"}) {
     const float dry = cantileverTip(model, 0.0, 0.8);
     const float wetStiff = cantileverTip(model, 0.3, 0.0);
     const float wetSoft = cantileverTip(model, 0.3, 0.8);
     std::printf("%s cantilever tip: dry %.4f m, wet as stiff %.4f m, wet softened %.4f m (root at 1 m)\n", model, dry,
                 wetStiff, wetSoft);
     EXPECT_NEAR(wetStiff, dry, 1e-4f) << model << ": the same weight and stiffness, the same droop";
-    EXPECT_LT(wetSoft, dry - 0.02f) << model << ": the softened wet strip droops further";
+    EXPECT_LT(wetSoft, dry - 0.015f) << model << ": the softened wet strip droops further";
   }
 }
 
