@@ -36,6 +36,8 @@ void Simulation::initialize() {
       if (origins_[i].plugin == plugins) modules_[i]->setup(*this);
   checkCellOccupancy();
   cloth.upload();
+  // The fields the modules' setup made (their arrays stay put from here on).
+  cloth.setFieldViews(vertexFields.find(field::kBendStiffnessScale), vertexFields.find(field::kFrictionScale));
   cloth.updateSlots(particles.view());
   std::vector<Vec3> sinkCorners;
   for (const auto& box : sinks) sinkCorners.insert(sinkCorners.end(), {box.first, box.second});
@@ -65,8 +67,6 @@ void Simulation::addCoreStages() {
   pipeline.append({stage::kFluidSolve, [](Simulation& s) { s.fluid.solve(s); }});
   pipeline.append({stage::kClothSolve, [](Simulation& s) {
                      if (s.cloth.empty()) return;
-                     s.cloth.setFieldViews(s.vertexFields.find(field::kBendStiffnessScale),
-                                           s.vertexFields.find(field::kFrictionScale));
                      ParticleView p = s.particles.view();
                      ClothView c = s.cloth.view();
                      s.contactDelta_.resize(p.count);
