@@ -7,40 +7,36 @@
 
 namespace soak {
 
-void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta, int passes) {
-  const ClothSlots cloth = clothSlots(c);
+void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta, int passes) {
+  const ClothSlots cloth = clothSlots(n.cloth);
+  const ClothView c = n.cloth;
   for (int pass = 0; pass < passes; ++pass) {
-    forEachClothParticleLanes(d, cloth, SOAK_LAMBDA(int i, Lanes lanes) {
-      const int phi = p.phase[i];
+    forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
       const Float4 xi4 = p.predicted[i];
       if (xi4.w == 0.f) {
         if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
         return;
       }
       const Vec3 xi = xi4.xyz();
-      const int vi = p.id[i];
-      const Vec3 resti = c.restPosition[vi];
-      const float thi = c.thickness[vi];
+      const float thi = c.thickness[p.id[i]];
       Vec3 sum(0.f, 0.f, 0.f);
       int count = 0;
-      forEachCandidate(g, g.slotKey[i], lanes, [&](int j) {
-        const int phj = p.phase[j];
-        if (j == i || !isCloth(phj)) return;
-        const int vj = p.id[j];
-        const float contact = 0.5f * (thi + c.thickness[vj]);
+      // The candidates are cloth particles other than i and its rest-shape
+      // neighbours (ClothContactLists.h).
+      forEachContactCandidate(n, v, i, lanes, [&](int j) {
+        const float contact = 0.5f * (thi + c.thickness[p.id[j]]);
         const Float4 xj4 = p.predicted[j];
         const Vec3 xij = xi - xj4.xyz();
         // The pair's normal is taken from the positions at the start of the
-        // step, so a fast layer cannot tunnel through and be pushed out the
-        // wrong side.
+        // (sub-)step, so a fast layer cannot tunnel through and be pushed out
+        // the wrong side.
         const Vec3 xij0 = p.position[i].xyz() - p.position[j].xyz();
         const float r0sq = lengthSquared(xij0);
         if (r0sq >= 4.f * contact * contact && lengthSquared(xij) >= contact * contact) return;
-        if (phj == phi && lengthSquared(resti - c.restPosition[vj]) < 1.44f * contact * contact) return;
-        const Vec3 n = r0sq > 1e-18f ? xij0 / sqrtf(r0sq) : normalizedOrZero(xij);
-        const float along = dot(xij, n);
-        if (along >= contact || lengthSquared(xij - n * along) >= contact * contact) return;
-        sum += n * ((contact - along) * xi4.w / (xi4.w + xj4.w));
+        const Vec3 nrm = r0sq > 1e-18f ? xij0 / sqrtf(r0sq) : normalizedOrZero(xij);
+        const float along = dot(xij, nrm);
+        if (along >= contact || lengthSquared(xij - nrm * along) >= contact * contact) return;
+        sum += nrm * ((contact - along) * xi4.w / (xi4.w + xj4.w));
         ++count;
       });
       sum = laneSum(lanes, sum);

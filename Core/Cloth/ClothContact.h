@@ -3,22 +3,23 @@
 // cloth thickness are pushed apart, except pairs that are that close in the
 // rest shape (mesh neighbours of the same cloth); and vertex-triangle
 // contact, which keeps a vertex from slipping through another layer.
+#include "Cloth/ClothContactLists.h"
 #include "Cloth/ClothSystem.h"
 #include "Neighbours/GridView.h"
 
 namespace soak {
 
-// `g` is any grid that holds the cloth particles: the full grid, or the
-// cloth's own (ClothSystem::grid(), which does not step over water).
-
-// `passes` Jacobi passes; `delta` is scratch of particle count.
-void resolveClothContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta, int passes);
+// `passes` Jacobi passes over the step's candidate pairs `n`, on `p` (the
+// step's or a cloth sub-step's positions); `delta` is scratch of particle count.
+void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta, int passes);
 
 // A cloth vertex that would cross a triangle of another layer (another
 // cloth, or a part of its own cloth that shares no vertex with its own
 // triangles) between its start-of-step and predicted positions is put back on
 // the side it came from, thickness / 2 away. Particle contact alone lets a
 // vertex slip between the other layer's vertices when a fold flattens.
+// `g` is any grid that holds the cloth particles: the full grid, or the
+// cloth's own (ClothSystem::grid(), which does not step over water).
 void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta);
 
 }  // namespace soak

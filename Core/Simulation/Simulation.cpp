@@ -15,7 +15,7 @@
 namespace soak {
 
 Simulation::Simulation(Device device)
-    : particles(device), grid(device), cloth(device), fluid(device), vertexFields(device), device_(device), contactDelta_(device),
+    : particles(device), grid(device), cloth(device), fluid(device), vertexFields(device), device_(device), contactDelta_(device), contactLists_(device),
       instabilityScratch_(device), substepStart_(device), substepVelocity_(device), velocityFix_(device),
       removeFlag_(device), couplingMoved_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
@@ -70,8 +70,10 @@ void Simulation::addCoreStages() {
                      ParticleView p = s.particles.view();
                      ClothView c = s.cloth.view();
                      s.contactDelta_.resize(p.count);
+                     if (s.contactPasses > 0)
+                       s.contactLists_.build(p, s.cloth.grid(), c, float(s.settings.timeStep), s.sizeListsNow());
                      auto contacts = [&s, c](ParticleView view) {
-                       resolveClothContacts(s.device(), view, s.cloth.grid(), c, s.contactDelta_.data(),
+                       resolveClothContacts(s.device(), view, s.contactLists_.view(), s.contactDelta_.data(),
                                             s.contactPasses);
                        resolveVertexTriangleContacts(s.device(), view, s.cloth.grid(), c, s.contactDelta_.data());
                      };

@@ -5,6 +5,7 @@
 
 #include "Backend/Buffer.h"
 #include "Backend/DownloadQueue.h"
+#include "Cloth/ClothContactLists.h"
 #include "Cloth/ClothSystem.h"
 #include "Cloth/VertexFields.h"
 #include "Fluid/FluidSolver.h"
@@ -161,6 +162,7 @@ class Simulation {
   void writeColliders();
   Device device_;
   Buffer<Vec3> contactDelta_;
+  ClothContactLists contactLists_;  // the step's cloth contact candidates
   Buffer<float> instabilityScratch_;
   Buffer<Float4> substepStart_;  // cloth sub-steps
   Buffer<Vec3> substepVelocity_, velocityFix_;

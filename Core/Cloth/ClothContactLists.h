@@ -1,0 +1,100 @@
+#pragma once
+// Candidate pairs for cloth contact, found once a step and read by every
+// contact pass of every cloth sub-step.
+//
+// A contact pass walking the 27 cells of the cloth grid visits 150-300
+// cloth particles (cells are the water's support radius, 4 cm; a sheet's
+// vertices are 1 cm apart), of which a handful come within the contact
+// distance c_ij = (th_i + th_j) / 2. Over one step a pair can only touch
+// if it starts close: its distance at the start of the step, |x_i - x_j|,
+// is at most the contact distance plus how far the two move. The lists
+// keep, for each cloth particle, the cloth particles j with
+//
+//     |x_i - x_j| < 3 c_ij + 3 (|v_i| + |v_j|) dt     (x, v at the step's start)
+//
+// that are not the same cloth's neighbours in the rest shape (closer than
+// 1.2 c_ij there), in the grid's order. Measured on every contact that acted
+// (small fig9b 2.5 s, fig3b 2 s on chebyshev 8 x 12, CPU), the pair's start
+// distance was at most 0.35 of that reach; on a sheet crumpling onto the
+// floor (ClothContactListsTest), every pair that ended a step within 1.5
+// c_ij had started within 0.54 of it.
+//
+// An item without a list (past the buffer's capacity, PairLists.h) walks
+// the grid and applies the same test to the same start positions, so it
+// sees the same candidates in the same order: on one lane (the CPU) the
+// contact sums have the same bits whether or not an item got a list, and
+// the lists' sizing need not be kept by checkpoints.
+#include "Cloth/ClothSystem.h"
+#include "Cloth/ForEachClothParticle.h"
+#include "Neighbours/GridView.h"
+#include "Neighbours/PairLists.h"
+#include "Particles/ParticleState.h"
+
+namespace soak {
+
+constexpr float kContactReachDistances = 3.f;  // c_ij in the reach above
+constexpr float kContactReachMotion = 3.f;     // (|v_i| + |v_j|) dt in it
+
+// What the test reads: positions, velocities, phases and vertex ids of the
+// particles at the step's start (the phases and ids hold for the whole step).
+struct ClothContactStep {
+  const Float4* position = nullptr;
+  const Vec3* velocity = nullptr;
+  const int* phase = nullptr;
+  const int* id = nullptr;
+  float dt = 0.f;
+};
+
+// Whether cloth particle j is a contact candidate of cloth particle i (slots).
+SOAK_INLINE bool mayTouchThisStep(const ClothContactStep& s, const ClothView& c, int i, int j) {
+  if (j == i || !isCloth(s.phase[j])) return false;
+  const int vi = s.id[i], vj = s.id[j];
+  const float contact = 0.5f * (c.thickness[vi] + c.thickness[vj]);
+  if (s.phase[j] == s.phase[i] && lengthSquared(c.restPosition[vi] - c.restPosition[vj]) < 1.44f * contact * contact)
+    return false;
+  const float reach = kContactReachDistances * contact +
+                      kContactReachMotion * (length(s.velocity[i]) + length(s.velocity[j])) * s.dt;
+  return lengthSquared(s.position[i].xyz() - s.position[j].xyz()) < reach * reach;
+}
+
+struct ClothContactView {
+  PairListView lists;      // items: the cloth particles in slot order (ClothSlots)
+  GridView grid;           // the cloth's grid: for items without a list
+  const int* slot = nullptr;
+  ClothContactStep step;
+  ClothView cloth;
+};
+
+// Calls f(j) for the contact candidates of item v (its particle slot i),
+// with `lanes`: this lane's share.
+template <class F>
+SOAK_INLINE void forEachContactCandidate(const ClothContactView& n, int v, int i, const Lanes& lanes, F&& f) {
+  if (!n.lists.listed(v)) {
+    forEachCandidate(n.grid, n.grid.slotKey[i], lanes, [&](int j) {
+      if (mayTouchThisStep(n.step, n.cloth, i, j)) f(j);
+    });
+    return;
+  }
+  const int s = n.lists.start[v], e = s + n.lists.count[v];
+  for (int k = s + lanes.index; k < e; k += lanes.size) f(n.lists.index[k]);
+}
+
+class ClothContactLists {
+ public:
+  explicit ClothContactLists(Device d) : lists_(d), device_(d) {}
+  // From the particles at the step's start (`p`: positions, velocities;
+  // valid from the neighbours stage, whose cloth grid `g` it walks).
+  // With `sizeExactly` (a maintenance step) the buffer is sized for all lists.
+  void build(ParticleView p, GridView g, ClothView c, float dt, bool sizeExactly);
+  ClothContactView view() const { return view_; }
+  int itemsWithoutList() const { return lists_.itemsWithoutList(); }
+  void setSizing(const PairListSizing& s) { lists_.setSizing(s); }  // tests: no lists at all
+  std::vector<std::vector<int>> download() const { return lists_.download(); }
+
+ private:
+  PairLists lists_;
+  ClothContactView view_;
+  Device device_;
+};
+
+}  // namespace soak
