@@ -35,21 +35,6 @@ else()
   message(STATUS "Soak: CPU-ONLY build (no CUDA backend; --device cuda will be refused)")
 endif()
 
-# soak_physics_sources(<target> <files...>): files written once for both
-# backends. With CUDA they are compiled by nvcc (so forEach launches kernels),
-# otherwise by the C++ compiler (forEach runs OpenMP loops).
-function(soak_physics_sources target)
-  target_sources(${target} PRIVATE ${ARGN})
-  if(SOAK_WITH_CUDA)
-    set_source_files_properties(${ARGN} TARGET_DIRECTORY ${target} PROPERTIES LANGUAGE CUDA)
-  endif()
-endfunction()
-
-function(soak_target_options target)
-  target_compile_options(${target} PRIVATE
-    $<$<COMPILE_LANGUAGE:CXX>:-Wall -Wextra>
-    $<$<COMPILE_LANGUAGE:CUDA>:--extended-lambda --expt-relaxed-constexpr -Xcompiler=-fopenmp -Xcompiler=-Wall --diag-suppress=20012>)
-  if(SOAK_WITH_CUDA)
-    target_compile_definitions(${target} PRIVATE SOAK_WITH_CUDA=1)
-  endif()
-endfunction()
+# soak_physics_sources, soak_target_options and soak_add_plugin, shared with
+# the installed CMake package (SoakConfig.cmake).
+include(${CMAKE_CURRENT_LIST_DIR}/SoakPluginFunctions.cmake)

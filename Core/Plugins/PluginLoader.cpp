@@ -36,6 +36,7 @@ void PluginLoader::loadFile(const std::string& path, const std::string& where) {
   auto version = reinterpret_cast<VersionFn>(dlsym(h, "soakPluginApiVersion"));
   auto name = reinterpret_cast<NameFn>(dlsym(h, "soakPluginName"));
   auto reg = reinterpret_cast<RegisterFn>(dlsym(h, "soakPluginRegister"));
+  auto builtFor = reinterpret_cast<NameFn>(dlsym(h, "soakPluginBuiltFor"));
   if (!version || !name || !reg) {
     dlclose(h);
     throw InputError("'" + path + "' is not a Soak plugin (no soakPluginRegister entry point)", where);
@@ -45,6 +46,13 @@ void PluginLoader::loadFile(const std::string& path, const std::string& where) {
     dlclose(h);
     throw InputError("plugin '" + path + "' was built for plugin API " + std::to_string(v) + ", this program has " +
                          std::to_string(SOAK_PLUGIN_API_VERSION),
+                     where);
+  }
+  const std::string against = builtFor ? builtFor() : "an unknown version";
+  if (!builtFor || against != SOAK_VERSION) {
+    dlclose(h);
+    throw InputError("plugin '" + path + "' was built against Soak " + against + ", this is Soak " + SOAK_VERSION +
+                         ": rebuild it against this Soak (find_package(Soak " + SOAK_VERSION + "))",
                      where);
   }
   handles_.push_back(h);
