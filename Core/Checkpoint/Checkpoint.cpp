@@ -11,7 +11,6 @@
 #include "Checkpoint/StateStream.h"
 #include "Output/FrameWriter.h"
 #include "Output/VtkFiles.h"
-#include "Simulation/Simulation.h"
 
 namespace soak {
 
@@ -57,11 +56,11 @@ std::uint64_t fnv1a64(const char* data, std::size_t size) {
 }
 
 void writeCheckpoint(const std::string& path, const CheckpointHeader& header, const FrameWriter& writer,
-                     const Simulation& sim) {
+                     const CheckpointState& state) {
   StateWriter payload;
   putHeader(payload, header);
   writer.saveState(payload);
-  sim.saveState(payload);
+  state.saveState(payload);
   const std::vector<char>& body = payload.bytes();
   std::string file(kMagic, sizeof(kMagic));
   auto append = [&file](const auto& v) { file.append(reinterpret_cast<const char*>(&v), sizeof(v)); };
@@ -105,18 +104,18 @@ Checkpoint Checkpoint::fromBytes(const std::string& file, const std::string& pat
   return c;
 }
 
-FrameWriter::ResumeState Checkpoint::load(const FrameWriter& writer, Simulation& sim) const {
+FrameWriter::ResumeState Checkpoint::load(const FrameWriter& writer, CheckpointState& state) const {
   StateReader in(payload_.data() + stateOffset_, payload_.size() - stateOffset_, path_);
   const FrameWriter::ResumeState output = writer.readResumeState(in);
-  sim.loadState(in);
+  state.loadState(in);
   if (!in.atEnd()) in.fail("it holds more state than this scene reads");
   return output;
 }
 
-void Checkpoint::restore(FrameWriter& writer, Simulation& sim) const {
+void Checkpoint::restore(FrameWriter& writer, CheckpointState& state) const {
   // Everything is read and checked before the output folder is touched: a
   // refused resume leaves the run it refuses as it was.
-  writer.resume(load(writer, sim));
+  writer.resume(load(writer, state));
 }
 
 }  // namespace soak

@@ -9,16 +9,15 @@
 //
 // The payload holds, in order: the scene (its path and its text as run),
 // where the run stands (frame, planned frames), the output writer's state
-// and the simulation's state (Simulation::saveState).
+// and the simulation's state (CheckpointState::saveState).
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "Checkpoint/CheckpointState.h"
 #include "Output/FrameWriter.h"
 
 namespace soak {
-
-class Simulation;
 
 struct CheckpointHeader {
   std::string scenePath;  // absolute path of the scene file (relative meshes resolve from its folder)
@@ -36,7 +35,7 @@ constexpr const char* kCheckpointFile = "checkpoint.soak";
 std::uint64_t fnv1a64(const char* data, std::size_t size);
 
 void writeCheckpoint(const std::string& path, const CheckpointHeader& header, const FrameWriter& writer,
-                     const Simulation& sim);
+                     const CheckpointState& state);
 
 // A checkpoint read and verified; restore() puts the state back.
 class Checkpoint {
@@ -47,11 +46,11 @@ class Checkpoint {
   const CheckpointHeader& header() const { return header_; }
   // Restores the writer's and the simulation's state. The simulation must be
   // built from header().sceneText; a mismatch is refused with InputError.
-  void restore(FrameWriter& writer, Simulation& sim) const;
+  void restore(FrameWriter& writer, CheckpointState& state) const;
   // restore() without its last part: reads and checks the writer's state
   // against its folder and loads the simulation's, then returns the
   // writer's state for FrameWriter::resume; nothing on disk is touched.
-  FrameWriter::ResumeState load(const FrameWriter& writer, Simulation& sim) const;
+  FrameWriter::ResumeState load(const FrameWriter& writer, CheckpointState& state) const;
 
  private:
   std::string path_;

@@ -7,7 +7,6 @@
 #include "Cloth/ClothVolume.h"
 #include "Fluid/SphKernels.h"
 #include "Physics/Integrate.h"
-#include "Simulation/Simulation.h"
 
 namespace soak {
 
@@ -57,10 +56,9 @@ void FluidSolver::resize(int n) {
   attributes_.resize(n);
 }
 
-void FluidSolver::computeBoundaryVolumes(Simulation& sim) {
-  ParticleView p = sim.particles.view();
+void FluidSolver::computeBoundaryVolumes(ParticleView p, GridView clothGrid, ClothSlots cloth) {
   resize(p.count);
-  computeClothVolumes(device_, p, sim.cloth.grid(), clothSlots(sim.cloth.view()), volume_.data());
+  computeClothVolumes(device_, p, clothGrid, cloth, volume_.data());
 }
 
 namespace {
@@ -161,26 +159,25 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
 
 }  // namespace
 
-void FluidSolver::solve(Simulation& sim) {
-  ParticleView p = sim.particles.view();
+void FluidSolver::solve(ParticleState& particles, const FluidContext& f, bool sizeLists) {
+  ParticleView p = particles.view();
   if (p.count == 0) return;
   resize(p.count);
   // Pairs within (1 + skin) h, once per step (FluidNeighbours.h).
-  neighbours_.build(p, sim.grid.view(), sim.water.neighbourSkin, sim.sizeListsNow());
+  neighbours_.build(p, f.grid, f.water.neighbourSkin, sizeLists);
   FluidNeighbourView g = neighbours_.view();
-  const WaterSettings ws = sim.water;
+  const WaterSettings ws = f.water;
   const float rho0 = ws.restDensity, m0 = ws.particleMass;
   const float eps = ws.relaxation * restDenominator_;
   // A lattice sparser than h has no neighbours and a zero denominator: then
   // there is no artificial pressure (and no relaxation to scale).
   const float corrK = restDenominator_ > 0.f ? ws.artificialPressure * rho0 * rho0 / restDenominator_ : 0.f;
   const float corrQ = ws.artificialPressureRadius;
-  const Collider* colliders = sim.deviceColliders();
-  const int colliderCount = int(sim.colliders.size());
+  const Collider* colliders = f.colliders;
+  const int colliderCount = f.colliderCount;
   const WallDensityTable wall = wall_;
-  const CorrectionConstants k{rho0, m0, corrK, corrQ, 1.f / (rho0 * m0), float(sim.settings.timeStep),
-                              colliders, colliderCount, &wall_,
-                              sim.vertexFields.find(field::kFrictionScale)};
+  const CorrectionConstants k{rho0, m0, corrK, corrQ, 1.f / (rho0 * m0), f.dt,
+                              colliders, colliderCount, &wall_, f.clothFrictionScale};
   float* lam = lambda_.data();
   float* rho = density_.data();
   const float* volume = volume_.data();
@@ -250,7 +247,7 @@ void FluidSolver::solve(Simulation& sim) {
     g.predicted = p.predicted;
   }
   // After an odd number of iterations x* lies in the spare buffer.
-  if (p.predicted != own) sim.particles.swapPredicted(spare_);
+  if (p.predicted != own) particles.swapPredicted(spare_);
 }
 
 namespace {
@@ -272,15 +269,14 @@ SOAK_INLINE void forEachWaterNeighbour(const GridView& g, const ParticleView& p,
 
 }  // namespace
 
-void FluidSolver::applyViscosity(Simulation& sim) {
-  const WaterSettings ws = sim.water;
+void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
+  const WaterSettings ws = f.water;
   if (ws.viscosity <= 0.f && ws.vorticity <= 0.f) return;
-  ParticleView p = sim.particles.view();
   if (p.count == 0) return;
   resize(p.count);
-  GridView g = sim.grid.view();
+  GridView g = f.grid;
   const float rho0 = ws.restDensity, c = ws.viscosity, vort = ws.vorticity;
-  const float dt = float(sim.settings.timeStep);
+  const float dt = f.dt;
   const float* rho = density_.data();
   Float4* vnew = spare_.data();  // the new velocity (xyz)
   Vec3* omega = omega_.data();
@@ -329,14 +325,13 @@ void FluidSolver::applyViscosity(Simulation& sim) {
   forEach(device_, p.count, SOAK_LAMBDA(int i) { p.velocity[i] = vnew[i].xyz(); }, "fluid.velocity");
 }
 
-const float* FluidSolver::compressionPerParticle(Simulation& sim) {
-  ParticleView p = sim.particles.view();
+const float* FluidSolver::compressionPerParticle(ParticleView p, const FluidContext& f) {
   if (p.count == 0) return nullptr;
   resize(p.count);
-  GridView g = sim.grid.view();
-  const float rho0 = sim.water.restDensity;
-  const Collider* colliders = sim.deviceColliders();
-  const int colliderCount = int(sim.colliders.size());
+  GridView g = f.grid;
+  const float rho0 = f.water.restDensity;
+  const Collider* colliders = f.colliders;
+  const int colliderCount = f.colliderCount;
   const WallDensityTable wall = wall_;
   float* err = scratch_.data();
   float* isWaterFlag = lambda_.data();  // scratch here: the solver recomputes lambda every iteration
@@ -364,11 +359,11 @@ const float* FluidSolver::compressionPerParticle(Simulation& sim) {
   return err;
 }
 
-void FluidSolver::densityError(Simulation& sim, double& mean, float& max) {
+void FluidSolver::densityError(ParticleView p, const FluidContext& f, double& mean, float& max) {
   mean = 0.0;
   max = 0.f;
-  const int n = sim.particles.count();
-  const float* err = compressionPerParticle(sim);
+  const int n = p.count;
+  const float* err = compressionPerParticle(p, f);
   if (!err) return;
   max = maxf(reduceMax(device_, err, n), 0.f);
   const double sum = reduceSum(device_, err, n);

@@ -4,15 +4,28 @@
 // particles of different masses and radii (partial absorption, drips) stay
 // symmetric and momentum conserving. See Doc/model.md, "Water".
 #include "Backend/Buffer.h"
+#include "Cloth/ForEachClothParticle.h"
 #include "Fluid/FluidNeighbours.h"
 #include "Fluid/WallDensity.h"
 #include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"
+#include "Physics/Collider.h"
 #include "Simulation/Settings.h"
 
 namespace soak {
 
-class Simulation;
+// What the fluid's passes read besides the particles: the step's grid
+// (valid from the neighbours stage on), the water's settings, the time
+// step, the colliders (device memory) and the cloth's friction field
+// against them (per cloth vertex; null: 1).
+struct FluidContext {
+  GridView grid;
+  WaterSettings water;
+  float dt = 0.f;
+  const Collider* colliders = nullptr;
+  int colliderCount = 0;
+  const float* clothFrictionScale = nullptr;
+};
 
 class FluidSolver {
  public:
@@ -27,19 +40,20 @@ class FluidSolver {
   // Volume V_k = 1 / sum_l W_kl of every cloth particle over the particles
   // of its own cloth (Akinci; the paper's V_i of Eq. 10) and its boundary
   // mass psi_k = rho0 V_k. Valid after the neighbour stage of a step.
-  void computeBoundaryVolumes(Simulation& sim);
+  void computeBoundaryVolumes(ParticleView p, GridView clothGrid, ClothSlots cloth);
   // The density constraint, `water.iterations` times; each iteration also
-  // projects the colliders.
-  void solve(Simulation& sim);
+  // projects the colliders. With `sizeLists` (a maintenance step) the
+  // neighbour lists' buffer is sized exactly (PairLists.h).
+  void solve(ParticleState& particles, const FluidContext& f, bool sizeLists);
   // XSPH viscosity and vorticity confinement on the new velocities.
-  void applyViscosity(Simulation& sim);
+  void applyViscosity(ParticleView p, const FluidContext& f);
   // Relative compression max(0, rho/rho0 - 1) of water particles at the
   // current positions: mean and max (reductions: the host waits).
-  void densityError(Simulation& sim, double& mean, float& max);
+  void densityError(ParticleView p, const FluidContext& f, double& mean, float& max);
   // The same per slot (0 for other particles), in device scratch that stays
   // valid until the solver's next call; queued, nothing waits. Null without
   // particles.
-  const float* compressionPerParticle(Simulation& sim);
+  const float* compressionPerParticle(ParticleView p, const FluidContext& f);
 
   const float* boundaryVolume() const { return volume_.data(); }
   // Density of each slot from the last solver iteration (kg/m^3).

@@ -21,7 +21,6 @@
 
 #include "Base/Error.h"
 #include "Output/VtkFiles.h"
-#include "Simulation/Simulation.h"
 
 namespace soak {
 
@@ -69,10 +68,9 @@ std::string frameName(const std::string& prefix, int frame, const char* ext) {
 
 // The cloth meshes' triangles, the channel names and the surface settings
 // do not change during a run: taken once, with the folders they need.
-void FrameWriter::captureLayout(Simulation& sim) {
-  const ParticleState& ps = sim.particles;
-  for (int c = 0; c < ps.channelCount(); ++c) channelNames_.push_back(ps.channelName(c));
-  const auto& objects = sim.cloth.objects();
+void FrameWriter::captureLayout(const OutputLayout& layout) {
+  channelNames_ = layout.channelNames;
+  const auto& objects = layout.cloths;
   for (std::size_t k = 0; k < objects.size(); ++k) {
     const ClothObject& obj = objects[k];
     ClothLayout l;
@@ -92,18 +90,18 @@ void FrameWriter::captureLayout(Simulation& sim) {
     }
     clothLayout_.push_back(std::move(l));
   }
-  surfaceOn_ = sim.settings.surfaceCellSize > 0.f;
-  splatCellSize_ = sim.settings.surfaceCellSize;
-  splatIso_ = sim.settings.surfaceIso;
-  restDensity_ = sim.water.restDensity;
-  waterSpacing_ = sim.water.spacing;
-  particleMass_ = sim.water.particleMass;
+  surfaceOn_ = layout.surfaceCellSize > 0.f;
+  splatCellSize_ = layout.surfaceCellSize;
+  splatIso_ = layout.surfaceIso;
+  restDensity_ = layout.water.restDensity;
+  waterSpacing_ = layout.water.spacing;
+  particleMass_ = layout.water.particleMass;
   if (settings_.vdb) {
     // The surface mesh's splat where <WaterSurface> sets one; else a cell of
     // 0.7 r0 (the paper's), no finer than 1/31 of the support's diameter so
     // that a particle touches at most 32^3 grid points (WaterSurface's limit).
     if (!surfaceOn_) {
-      splatCellSize_ = std::max(0.7f * sim.water.spacing, 2.f * sim.water.supportRadius / 31.f);
+      splatCellSize_ = std::max(0.7f * layout.water.spacing, 2.f * layout.water.supportRadius / 31.f);
       splatIso_ = 0.5f;
     }
     makeDirectories(dir_ + "/water_vdb");
@@ -115,25 +113,25 @@ void FrameWriter::captureLayout(Simulation& sim) {
   haveLayout_ = true;
 }
 
-void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
+void FrameWriter::writeFrame(FrameSource& source, int frame, double stepMs) {
   const auto start = std::chrono::steady_clock::now();
   struct AddTime {
     double& total;
     std::chrono::steady_clock::time_point start;
     ~AddTime() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
   } addTime{captureSeconds_, start};
-  if (!haveLayout_) captureLayout(sim);
+  if (!haveLayout_) captureLayout(source.outputLayout());
   if (!downloads_) {
-    sim_ = &sim;
-    downloads_ = std::make_unique<DownloadQueue>(sim.device());
-    writerThreads_ = writerThreadsFor(settings_, sim.device());
+    source_ = &source;
+    downloads_ = std::make_unique<DownloadQueue>(source.frameDevice());
+    writerThreads_ = writerThreadsFor(settings_, source.frameDevice());
   }
   auto c = std::make_unique<Capture>();
   c->frame = frame;
   c->stepMs = stepMs;
 
   if (writerThreads_ == 0) {  // written here, on the stepping thread
-    c->copy = startFrameCopy(sim, *downloads_);
+    c->copy = source.startFrameCopy(*downloads_);
     const Frame f = receive(*c);
     commit(f, writeFiles(f));
     return;
@@ -150,7 +148,7 @@ void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
     }
   }
   // On the stepping thread: the copies are queued, nothing waits for them.
-  c->copy = startFrameCopy(sim, *downloads_);
+  c->copy = source.startFrameCopy(*downloads_);
   {
     std::lock_guard<std::mutex> lock(mutex_);
     c->sequence = captured_++;
@@ -164,11 +162,11 @@ void FrameWriter::writeFrame(Simulation& sim, int frame, double stepMs) {
 FrameWriter::Frame FrameWriter::receive(Capture& c) const {
   Frame f;
   f.frame = c.frame;
-  f.data = finishFrameCopy(std::move(c.copy), *downloads_);
+  f.data = source_->finishFrameCopy(std::move(c.copy), *downloads_);
   f.stats.add("frame", c.frame);
   f.stats.add("time", f.data.time);
   f.stats.add("step", double(f.data.step));
-  const StatsRow simStats = frameStats(*sim_, f.data);
+  const StatsRow simStats = source_->frameStats(f.data);
   for (const auto& col : simStats.values()) f.stats.add(col.first, col.second);
   f.stats.add("step_ms", c.stepMs);
   return f;

@@ -17,11 +17,10 @@
 #include "Output/PvdCollection.h"
 #include "Output/VtkFiles.h"
 #include "Registry/Module.h"
-#include "Simulation/FrameCopy.h"
+#include "Output/FrameSource.h"
 
 namespace soak {
 
-class Simulation;
 class StateWriter;
 class StateReader;
 
@@ -41,8 +40,8 @@ class StateReader;
 // frames in order (each .pvd and stats.csv gain a frame only once all its
 // files are on disk). A step waits only when OutputSettings::queuedFrames
 // frames are queued (the disk cannot keep up), which waitedForDisk() then
-// reports. The simulation must outlive the writer (its stats read the
-// simulation's setup), as it does when declared before it.
+// reports. The source (the simulation) must outlive the writer (its stats
+// read the source's setup), as it does when declared before it.
 class FrameWriter {
  public:
   // Fresh: creates the folder (InputError if it cannot be written), writes
@@ -56,8 +55,8 @@ class FrameWriter {
   ~FrameWriter();
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
-  // Captures frame `frame` of `sim` and queues it for writing.
-  void writeFrame(Simulation& sim, int frame, double stepMs);
+  // Captures frame `frame` of `source` and queues it for writing.
+  void writeFrame(FrameSource& source, int frame, double stepMs);
   // Returns once every queued frame is on disk and listed; rethrows the
   // first error a writer thread met (a full disk, say).
   void flush();
@@ -121,7 +120,7 @@ class FrameWriter {
     std::string water, surface;
     std::vector<std::string> cloth;
   };
-  void captureLayout(Simulation& sim);
+  void captureLayout(const OutputLayout& layout);
   Frame receive(Capture& c) const;
   Written writeFiles(const Frame& f) const;
   void commit(const Frame& f, const Written& files);
@@ -149,11 +148,11 @@ class FrameWriter {
   // OpenVDB's points: the water spacing and a full particle's mass.
   float waterSpacing_ = 0.02f, particleMass_ = 0.0082f;
 
-  // Set by the first writeFrame: the simulation whose frames these are
+  // Set by the first writeFrame: the source whose frames these are
   // (frameStats reads its setup) and the queue of its copies to the host.
-  const Simulation* sim_ = nullptr;
+  const FrameSource* source_ = nullptr;
   std::unique_ptr<DownloadQueue> downloads_;
-  int writerThreads_ = 0;  // writerThreadsFor(settings_, the simulation's device)
+  int writerThreads_ = 0;  // writerThreadsFor(settings_, the source's device)
 
   // The queue and its writer threads.
   std::mutex mutex_;

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "Backend/DownloadQueue.h"
-#include "Simulation/FrameData.h"
+#include "Output/FrameData.h"
 
 namespace soak {
 

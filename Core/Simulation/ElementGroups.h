@@ -2,6 +2,6 @@
 // Core's scene elements, registered by registerCoreElements() in groups.
 namespace soak {
 class ModuleRegistry;
-void registerClothElement(ModuleRegistry& r);         // Cloth/ClothElement.cpp
+void registerClothElement(ModuleRegistry& r);         // Simulation/ClothElement.cpp
 void registerWaterSourceElements(ModuleRegistry& r);  // Simulation/WaterSources.cpp
 }  // namespace soak

@@ -37,7 +37,7 @@ FrameCopy startFrameCopy(Simulation& sim, DownloadQueue& queue) {
                                          part(p.phase, p.count),    part(p.id, p.count),
                                          part(sim.fluid.density(), c.densitySlots)};
   // Compression at step 0 is not measured (stats show 0), as no solve has run.
-  const float* compression = sim.stepIndex() > 0 ? sim.fluid.compressionPerParticle(sim) : nullptr;
+  const float* compression = sim.stepIndex() > 0 ? sim.fluid.compressionPerParticle(p, sim.fluidContext()) : nullptr;
   c.compression = compression != nullptr;
   if (c.compression) parts.push_back(part(compression, p.count));
   for (int k = 0; k < c.channels; ++k) parts.push_back(part(ps.channel(k), p.count));
@@ -132,5 +132,27 @@ StatsRow frameStats(const Simulation& sim, const FrameData& frame) {
     sim.modules()[m]->addStats(frame, m < frame.modules.size() ? frame.modules[m] : kNone, row);
   return row;
 }
+
+}  // namespace soak
+
+namespace soak {
+
+OutputLayout Simulation::outputLayout() const {
+  OutputLayout l;
+  for (int c = 0; c < particles.channelCount(); ++c) l.channelNames.push_back(particles.channelName(c));
+  l.cloths = cloth.objects();
+  l.surfaceCellSize = settings.surfaceCellSize;
+  l.surfaceIso = settings.surfaceIso;
+  l.water = water;
+  return l;
+}
+
+FrameCopy Simulation::startFrameCopy(DownloadQueue& queue) { return soak::startFrameCopy(*this, queue); }
+
+FrameData Simulation::finishFrameCopy(FrameCopy&& copy, DownloadQueue& queue) const {
+  return soak::finishFrameCopy(std::move(copy), queue);
+}
+
+StatsRow Simulation::frameStats(const FrameData& frame) const { return soak::frameStats(*this, frame); }
 
 }  // namespace soak

@@ -4,21 +4,11 @@
 
 #include "Backend/DownloadQueue.h"
 #include "Registry/Module.h"
-#include "Simulation/FrameData.h"
+#include "Output/FrameSource.h"
 
 namespace soak {
 
 class Simulation;
-
-// An output frame queued for copying to the host: what startFrameCopy took
-// on the stepping thread, and where its arrays will be.
-struct FrameCopy {
-  std::unique_ptr<DownloadQueue::Transfer> transfer;
-  FrameData scalars;  // step, time and the water budget; no arrays yet
-  int count = 0, densitySlots = 0, channels = 0;
-  bool compression = false;
-  std::vector<int> moduleParts;  // parts each module named, in module order
-};
 
 // Queues copies of the particle arrays, channels, density and compression
 // and of what modules name for their stats (Module::statsSources). Called

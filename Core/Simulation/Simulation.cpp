@@ -50,6 +50,11 @@ void Simulation::initialize() {
   pipeline.placeWaiting();
 }
 
+FluidContext Simulation::fluidContext() const {
+  return {grid.view(), water, float(settings.timeStep), deviceColliders(), int(colliders.size()),
+          vertexFields.find(field::kFrictionScale)};
+}
+
 void Simulation::addCoreStages() {
   pipeline.append({stage::kPredict, [](Simulation& s) {
                      predictPositions(s.device(), s.particles.view(), s.settings.gravity, s.settings.timeStep);
@@ -61,10 +66,13 @@ void Simulation::addCoreStages() {
                      if (!s.cloth.empty()) {
                        s.cloth.updateSlots(s.particles.view());
                        s.cloth.buildGrid(s.grid.view());
-                       s.fluid.computeBoundaryVolumes(s);
+                       s.fluid.computeBoundaryVolumes(s.particles.view(), s.cloth.grid(),
+                                                      clothSlots(s.cloth.view()));
                      }
                    }});
-  pipeline.append({stage::kFluidSolve, [](Simulation& s) { s.fluid.solve(s); }});
+  pipeline.append({stage::kFluidSolve, [](Simulation& s) {
+                     s.fluid.solve(s.particles, s.fluidContext(), s.sizeListsNow());
+                   }});
   pipeline.append({stage::kClothSolve, [](Simulation& s) {
                      if (s.cloth.empty()) return;
                      ParticleView p = s.particles.view();
@@ -116,7 +124,7 @@ void Simulation::addCoreStages() {
                      const bool substeps = s.settings.clothSubsteps > 1 && !s.cloth.empty();
                      updateVelocities(s.device(), s.particles.view(), s.settings.timeStep,
                                       substeps ? s.velocityFix_.data() : nullptr);
-                     s.fluid.applyViscosity(s);
+                     s.fluid.applyViscosity(s.particles.view(), s.fluidContext());
                    }});
 }
 
@@ -212,7 +220,7 @@ bool Simulation::maintenanceStep() const {
 
 StatsRow Simulation::collectStats() {
   if (!statsDownloads_) statsDownloads_ = std::make_unique<DownloadQueue>(device_);
-  return frameStats(*this, finishFrameCopy(startFrameCopy(*this, *statsDownloads_), *statsDownloads_));
+  return frameStats(finishFrameCopy(startFrameCopy(*statsDownloads_), *statsDownloads_));
 }
 
 }  // namespace soak

@@ -5,11 +5,13 @@
 
 #include "Backend/Buffer.h"
 #include "Backend/DownloadQueue.h"
+#include "Checkpoint/CheckpointState.h"
 #include "Cloth/ClothContactLists.h"
 #include "Cloth/ClothSystem.h"
 #include "Cloth/VertexFields.h"
 #include "Fluid/FluidSolver.h"
 #include "Neighbours/NeighbourGrid.h"
+#include "Output/FrameSource.h"
 #include "Particles/ParticleState.h"
 #include "Physics/Collider.h"
 #include "Pipeline/Pipeline.h"
@@ -30,7 +32,7 @@ struct ModuleOrigin {
 
 // Everything one run holds: settings, particles, the neighbour grid,
 // colliders, the modules made from the scene, and the step pipeline.
-class Simulation {
+class Simulation final : public CheckpointState, public FrameSource {
  public:
   explicit Simulation(Device device);
   ~Simulation();
@@ -81,8 +83,8 @@ class Simulation {
   // Checkpoints: step counter, water budget, particles and every module's
   // state. loadState expects a simulation built from the same scene
   // (initialize() done) and refuses one that does not match.
-  void saveState(StateWriter& out) const;
-  void loadState(StateReader& in);
+  void saveState(StateWriter& out) const override;
+  void loadState(StateReader& in) override;
 
   SimulationSettings settings;
   WaterSettings water;
@@ -147,6 +149,15 @@ class Simulation {
   // Marks the collider list changed so it is uploaded before the next step.
   void collidersChanged() { collidersDirty_ = true; }
   const Collider* deviceColliders() const { return colliderBuffer_.data(); }
+  // What the fluid's passes read (valid from the neighbours stage on).
+  FluidContext fluidContext() const;
+
+  // FrameSource (Output/FrameWriter.h): Simulation/FrameCopy.h does the work.
+  Device frameDevice() const override { return device_; }
+  OutputLayout outputLayout() const override;
+  FrameCopy startFrameCopy(DownloadQueue& queue) override;
+  FrameData finishFrameCopy(FrameCopy&& copy, DownloadQueue& queue) const override;
+  StatsRow frameStats(const FrameData& frame) const override;
 
   // Water mass removed by sinks or by leaving the domain (kg), as of the
   // last compaction; collectStats() adds the removed slots not yet compacted.

@@ -214,8 +214,8 @@ TEST(GpuAgreement, NeighbourCountsAndStatsMatchCpu) {
   EXPECT_NEAR(sc.get("free_water_mass"), sg.get("free_water_mass"), 1e-9);
   double meanA, meanB;
   float maxA, maxB;
-  cpu->fluid.densityError(*cpu, meanA, maxA);
-  gpu->fluid.densityError(*gpu, meanB, maxB);
+  cpu->fluid.densityError(cpu->particles.view(), cpu->fluidContext(), meanA, maxA);
+  gpu->fluid.densityError(gpu->particles.view(), gpu->fluidContext(), meanB, maxB);
   EXPECT_NEAR(meanA, meanB, 1e-5);
   EXPECT_NEAR(maxA, maxB, 1e-4);
   // The grid orders particles identically (stable sort on both devices).

@@ -67,7 +67,7 @@ void expectFrameStatsMatchDeviceReductions(Device d) {
 
   double mean = 0.0;
   float max = 0.f;
-  sim->fluid.densityError(*sim, mean, max);
+  sim->fluid.densityError(sim->particles.view(), sim->fluidContext(), mean, max);
   const float stretch = sim->cloth.maxStretch(sim->particles.view());
   const int n = sim->particles.count();
   const int held = sim->particles.findChannel("held_water");

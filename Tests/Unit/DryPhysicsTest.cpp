@@ -40,7 +40,7 @@ TEST(Water, RestingTankSettlesLevelWithSmallDensityError) {
   for (int s = 0; s < 200; ++s) sim->step();
   double mean = 0.0;
   float max = 0.f;
-  sim->fluid.densityError(*sim, mean, max);
+  sim->fluid.densityError(sim->particles.view(), sim->fluidContext(), mean, max);
   std::printf("resting tank: mean density error %.4f, max %.4f\n", mean, max);
   EXPECT_LT(mean, 0.01);
   EXPECT_LT(max, 0.03f);
@@ -251,7 +251,7 @@ TEST(Water, AnOddNumberOfIterationsKeepsItsLastCorrection) {
     for (int s = 0; s < 40; ++s) sim->step();
     double mean = 0.0;
     float max = 0.f;
-    sim->fluid.densityError(*sim, mean, max);
+    sim->fluid.densityError(sim->particles.view(), sim->fluidContext(), mean, max);
     return mean;
   };
   const double one = settle(1), two = settle(2);
