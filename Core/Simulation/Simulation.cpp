@@ -5,8 +5,6 @@
 
 #include "Backend/Primitives.h"
 #include "Backend/ForEach.h"
-#include "Cloth/ClothContact.h"
-#include "Cloth/ClothSolve.h"
 #include "Coupling/TriangleCoupling.h"
 #include "Physics/Integrate.h"
 #include "Pipeline/StageNames.h"
@@ -15,9 +13,8 @@
 namespace soak {
 
 Simulation::Simulation(Device device)
-    : particles(device), grid(device), cloth(device), fluid(device), vertexFields(device), device_(device), contactDelta_(device), contactLists_(device),
-      instabilityScratch_(device), substepStart_(device), substepVelocity_(device), velocityFix_(device),
-      removeFlag_(device), couplingMoved_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
+    : particles(device), grid(device), cloth(device), fluid(device), vertexFields(device), device_(device),
+      clothStep_(device), instabilityScratch_(device), removeFlag_(device), couplingMoved_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
 
 Simulation::~Simulation() = default;
 
@@ -75,38 +72,11 @@ void Simulation::addCoreStages() {
                    }});
   pipeline.append({stage::kClothSolve, [](Simulation& s) {
                      if (s.cloth.empty()) return;
-                     ParticleView p = s.particles.view();
-                     ClothView c = s.cloth.view();
-                     s.contactDelta_.resize(p.count);
-                     if (s.contactPasses > 0)
-                       s.contactLists_.build(p, s.cloth.grid(), c, float(s.settings.timeStep), s.sizeListsNow());
-                     auto contacts = [&s, c](ParticleView view) {
-                       resolveClothContacts(s.device(), view, s.contactLists_.view(), s.contactDelta_.data(),
-                                            s.contactPasses);
-                       resolveVertexTriangleContacts(s.device(), view, s.cloth.grid(), c, s.contactDelta_.data());
-                     };
-                     if (s.settings.clothSubsteps > 1) {
-                       s.substepStart_.resize(p.count);
-                       s.substepVelocity_.resize(p.count);
-                       s.velocityFix_.resize(p.count);
-                       substepCloth(s.device(), p, s.cloth, s.deviceColliders(), int(s.colliders.size()),
-                                    kCollisionRadiusScale, s.settings.gravity, float(s.settings.timeStep),
-                                    s.settings.clothSubsteps, s.settings.clothIterations,
-                                    s.settings.clothSpectralRadius,
-                                    {s.substepStart_.data(), s.substepVelocity_.data(), s.velocityFix_.data()},
-                                    contacts);
-                       return;
-                     }
-                     moveAttachedVertices(s.device(), p, c, s.deviceColliders());
-                     s.cloth.resetMultipliers();
-                     solveClothConstraints(s.device(), p, c, s.cloth.edgeColourStart(), s.cloth.bendColourStart(),
-                                           s.settings.clothIterations, float(s.settings.timeStep));
-                     solveClothJacobi(s.device(), p, c, s.settings.clothIterations, float(s.settings.timeStep),
-                                      s.settings.clothSpectralRadius);
-                     // Colliders first, so that contact sees a layer resting on the floor where it is.
-                     projectColliders(s.device(), p, s.deviceColliders(), int(s.colliders.size()),
-                                      kCollisionRadiusScale, float(s.settings.timeStep), c.frictionScale);
-                     contacts(p);
+                     const SimulationSettings& set = s.settings;
+                     s.clothStep_.run(s.particles.view(), s.cloth, s.deviceColliders(), int(s.colliders.size()),
+                                      {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothIterations,
+                                       set.clothSpectralRadius, s.contactPasses, kCollisionRadiusScale,
+                                       s.sizeListsNow()});
                    }});
   pipeline.append({stage::kCollide, [](Simulation& s) {
                      projectColliders(s.device(), s.particles.view(), s.deviceColliders(),
@@ -121,9 +91,8 @@ void Simulation::addCoreStages() {
                                             s.couplingMinLanes);
                    }});
   pipeline.append({stage::kFinalize, [](Simulation& s) {
-                     const bool substeps = s.settings.clothSubsteps > 1 && !s.cloth.empty();
                      updateVelocities(s.device(), s.particles.view(), s.settings.timeStep,
-                                      substeps ? s.velocityFix_.data() : nullptr);
+                                      s.cloth.empty() ? nullptr : s.clothStep_.velocityFix());
                      s.fluid.applyViscosity(s.particles.view(), s.fluidContext());
                    }});
 }

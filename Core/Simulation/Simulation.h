@@ -6,7 +6,7 @@
 #include "Backend/Buffer.h"
 #include "Backend/DownloadQueue.h"
 #include "Checkpoint/CheckpointState.h"
-#include "Cloth/ClothContactLists.h"
+#include "Cloth/ClothStep.h"
 #include "Cloth/ClothSystem.h"
 #include "Cloth/VertexFields.h"
 #include "Fluid/FluidSolver.h"
@@ -172,11 +172,8 @@ class Simulation final : public CheckpointState, public FrameSource {
   // Moved colliders to the device: by a kernel's parameters (no wait).
   void writeColliders();
   Device device_;
-  Buffer<Vec3> contactDelta_;
-  ClothContactLists contactLists_;  // the step's cloth contact candidates
+  ClothStep clothStep_;  // the cloth.solve stage and its buffers
   Buffer<float> instabilityScratch_;
-  Buffer<Float4> substepStart_;  // cloth sub-steps
-  Buffer<Vec3> substepVelocity_, velocityFix_;
   Buffer<int> removeFlag_;
   Buffer<int> couplingMoved_;  // scratch of the coupling passes
   Buffer<float> removedMass_;

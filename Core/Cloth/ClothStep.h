@@ -1,0 +1,42 @@
+#pragma once
+// The core's cloth.solve stage: the cloth's constraints, colliders and
+// contacts for one step, in one pass or in sub-steps (ClothSolve.h), with
+// the buffers it keeps between steps (the contact candidates, the
+// sub-steps' scratch). Reads and writes the particles' x* through `p`.
+#include "Backend/Buffer.h"
+#include "Cloth/ClothContactLists.h"
+#include "Cloth/ClothSystem.h"
+#include "Physics/Collider.h"
+
+namespace soak {
+
+struct ClothStepSettings {
+  float dt = 0.f;
+  Vec3 gravity;
+  int substeps = 1;          // Simulation.clothSubsteps
+  int iterations = 1;        // Simulation.clothIterations: constraint rounds per (sub-)step
+  float spectralRadius = 0;  // Simulation.clothSpectralRadius (chebyshev)
+  int contactPasses = 2;     // particle contact passes per (sub-)step
+  float collisionRadiusScale = 1.f;
+  bool sizeLists = false;    // a step that sizes neighbour lists exactly (Simulation::sizeListsNow)
+};
+
+class ClothStep {
+ public:
+  explicit ClothStep(Device d);
+  void run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
+           const ClothStepSettings& s);
+  // After a sub-stepped run: per slot, the velocity the last sub-step left
+  // minus (x* - x) / dt, which finalize adds (ClothSolve.h); else null.
+  const Vec3* velocityFix() const { return substepped_ ? velocityFix_.data() : nullptr; }
+
+ private:
+  Device device_;
+  Buffer<Vec3> contactDelta_;
+  ClothContactLists contactLists_;
+  Buffer<Float4> substepStart_;
+  Buffer<Vec3> substepVelocity_, velocityFix_;
+  bool substepped_ = false;
+};
+
+}  // namespace soak
