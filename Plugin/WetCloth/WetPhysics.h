@@ -1,6 +1,8 @@
 #pragma once
-// The wetting stages (paper Section 4, Algorithm 1 lines 11-25) as plain
-// functions over particle arrays: each runs on the CPU and on the GPU.
+// The wetting stages' physics (paper Section 4, Algorithm 1 lines 11-25) as
+// plain functions over particle arrays: each runs on the CPU and on the GPU.
+// Each is defined in its stage's file, Stages/<Stage>.cpp, and takes the
+// scratch it needs by name.
 #include "Cloth/ClothNeighbours.h"
 #include "Cloth/ClothSystem.h"
 #include "Cloth/ForEachClothParticle.h"
@@ -12,18 +14,14 @@ namespace soak::wet {
 
 // Where the wetting state lives. Per slot (particle channels, so they follow
 // the grid's reordering): held water (kg) and buffered excess water (kg) of
-// cloth particles, their saturation and volume; per slot scratch; per cloth
-// vertex: kappa_couple (Eq. 22, read by the core's coupling stage) and the
-// dry particle mass.
+// cloth particles, their saturation and volume; per cloth vertex:
+// kappa_couple (Eq. 22, read by the core's coupling stage) and the dry
+// particle mass.
 struct WetArrays {
   float* held = nullptr;
   float* buffer = nullptr;
   float* saturation = nullptr;
   float* volume = nullptr;
-  float* scratchA = nullptr;
-  float* scratchB = nullptr;
-  float* scratchC = nullptr;
-  Vec3* delta = nullptr;
   float* kappaCouple = nullptr;
   float* bendScale = nullptr;      // per vertex, the core's field::kBendStiffnessScale (null: not made)
   float* frictionScale = nullptr;  // per vertex, the core's field::kFrictionScale (null: not made)
@@ -51,25 +49,39 @@ void updatePorosity(Device d, ParticleView p, WetArrays a, const WetParams& w);
 // wet.absorb (Eq. 11): water particles give water to the cloth particles
 // around them; partial absorption shrinks a particle's mass and radius,
 // whole absorption sets its mass to 0 (the core drains it next step).
+struct AbsorbScratch {  // per slot
+  float* scale = nullptr;  // cloth: the share of its wish a cloth particle may take (room left)
+  float* ratio = nullptr;  // water: the share of each cloth particle's ask it can give
+  float* asked = nullptr;  // water: what the cloth around asks of it
+};
 void absorbWater(Device d, ParticleView p, GridView g, WetArrays a, const WetParams& w, WaterReference ref,
-                 float dt);
+                 float dt, AbsorbScratch s);
 
 // wet.diffuse (Eq. 12-17): the saturation constraint, conservative or
 // literal, over diffusionSchedule(w, dt)'s passes.
-void diffuseWater(Device d, ParticleView p, WetArrays a, const WetParams& w, WaterReference ref,
-                  float dt);
+struct DiffusionScratch {  // per slot
+  float* alpha = nullptr;  // alpha_i of Eq. 16
+  float* limit = nullptr;  // the share of its outflow a donor can give
+  float* next = nullptr;   // held water after the pass
+};
+void diffuseWater(Device d, ParticleView p, WetArrays a, const WetParams& w, WaterReference ref, float dt,
+                  DiffusionScratch s);
 
-// The diffusion passes' last kernel: held water becomes scratchC (the next
-// values a pass computed), and the saturation follows (Eq. 10).
-void applyHeldWater(Device d, WetArrays a, float c, const char* stage);
+// The diffusion passes' last kernel: held water becomes `next` (the values a
+// pass computed), and the saturation follows (Eq. 10).
+void applyHeldWater(Device d, WetArrays a, const float* next, float c, const char* stage);
 
 // wet.emit, first half (Eq. 18): where gravity overcomes the saturation
 // difference above, bufferFlowRate x dt of a buffer (all of it in one of
 // the paper's steps) moves to the cloth particles below. due[v] (per
 // cloth item, ClothSlots order) becomes 1 where the buffer now holds at
 // least m_threshold: a drip is due there (takeDripMass).
+struct TransferScratch {  // per slot
+  float* out = nullptr;   // buffer mass a donor gives this step
+  float* norm = nullptr;  // sum of its receivers' weights
+};
 void transferBuffers(Device d, ParticleView p, WetArrays a, const WetParams& w, WaterReference ref,
-                     float dt, int* due);
+                     float dt, int* due, TransferScratch s);
 
 // Where a drip starts: its cloth particle's predicted position and velocity.
 struct DripSource {
@@ -115,7 +127,7 @@ void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
                   float dt);
 
 // wet.stick (Eq. 20): touching cloth particles of different layers attract,
-// most at S^T, as a position change dt^2 f / m.
-void stickWetCloth(Device d, ParticleView p, ClothView c, WetArrays a, const WetParams& w, float dt);
+// most at S^T, as a position change dt^2 f / m. `delta`: scratch per slot.
+void stickWetCloth(Device d, ParticleView p, ClothView c, WetArrays a, const WetParams& w, float dt, Vec3* delta);
 
 }  // namespace soak::wet

@@ -21,7 +21,12 @@ int fickSubsteps(const WetParams& w, float dt, float closest);
 // round-off; a donor never gives more than it holds.
 // `material`: the cloth's material coordinates per vertex (ClothView), for
 // the warp and weft diffusivities.
+struct FickScratch {  // per slot
+  float* norm = nullptr;   // N_i = sum_j w_ij r_ij^2
+  float* limit = nullptr;  // the share of its outflow a donor can give
+  float* next = nullptr;   // held water after the sub-step
+};
 void diffuseFick(Device d, ParticleView p, WetArrays a, const Vec3* material, const WetParams& w, WaterReference ref,
-                 float dt, int substeps);
+                 float dt, int substeps, FickScratch s);
 
 }  // namespace soak::wet

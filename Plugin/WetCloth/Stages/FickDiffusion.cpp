@@ -1,4 +1,4 @@
-#include "FickDiffusion.h"
+#include "Stages/FickDiffusion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,12 +84,12 @@ int fickSubsteps(const WetParams& w, float dt, float closest) {
 }
 
 void diffuseFick(Device d, ParticleView p, WetArrays a, const Vec3* material, const WetParams& w, WaterReference ref,
-                 float dt, int substeps) {
+                 float dt, int substeps, FickScratch s) {
   const float c = w.c, Du = w.diffusivity, Dv = weftDiffusivity(w), u = w.drainageSpeed, h = dt / float(substeps);
   const Vec3 g = ref.gravityDir;
-  float* norm = a.scratchA;
-  float* limit = a.scratchB;
-  float* next = a.scratchC;
+  float* norm = s.norm;
+  float* limit = s.limit;
+  float* next = s.next;
   float* S = a.saturation;
   // N_i = sum_j w_ij r_ij^2 over the particle's own cloth; the cloth does
   // not move while the water spreads.
@@ -132,7 +132,7 @@ void diffuseFick(Device d, ParticleView p, WetArrays a, const Vec3* material, co
       change = laneSum(lanes, change) * h;
       if (lanes.leader()) next[i] = maxf(a.held[i] + change, 0.f);
     }, "wet.fick.exchange", kListLanes);
-    applyHeldWater(d, a, c, "wet.fick.apply");
+    applyHeldWater(d, a, next, c, "wet.fick.apply");
   }
 }
 

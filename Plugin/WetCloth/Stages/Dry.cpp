@@ -1,7 +1,12 @@
+// wet.dry (after wet.stick, where dryingRate > 0): evaporation from the
+// water the fabric holds (Drying.h).
 #include "Drying.h"
 
 #include "Backend/ForEach.h"
+#include "Simulation/Simulation.h"
+#include "Stages/WetStages.h"
 #include "WetKernels.h"
+#include "WetState.h"
 
 namespace soak::wet {
 
@@ -18,6 +23,11 @@ void evaporateWater(Device d, ParticleView p, WetArrays a, const float* vertexAr
     evaporated[i] += held - after;
     a.saturation[i] = saturationOf(c, after, V);
   }, "wet.dry");
+}
+
+void runDry(WetState& st, Simulation& s) {
+  evaporateWater(s.device(), s.particles.view(), st.arrays(s), st.vertexArea.data(), s.particles.channel(st.evaporated),
+                 st.drying, st.w.c, float(s.settings.timeStep));
 }
 
 }  // namespace soak::wet
