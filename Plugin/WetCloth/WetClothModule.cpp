@@ -37,10 +37,10 @@ class WetClothModule : public Module {
     st_->initialSaturation = initialSaturation_;
     st_->where = where_;
     ParticleState& ps = sim.particles;
-    st_->held = ps.addChannel("held_water");
-    st_->buffer = ps.addChannel("buffer");
-    st_->saturation = ps.addChannel("saturation");
-    st_->volume = ps.addChannel("volume");
+    st_->held = ps.addChannel(kHeldWaterChannel);
+    st_->buffer = ps.addChannel(kBufferChannel);
+    st_->saturation = ps.addChannel(kSaturationChannel);
+    st_->volume = ps.addChannel(kVolumeChannel);
     // Dry mass per cloth vertex (the id of a cloth particle is its vertex).
     const int vertices = sim.cloth.vertexCount();
     std::vector<float> dry(std::size_t(vertices), 0.f);

@@ -125,7 +125,7 @@ TEST(Wicking, WarpAndWeftDiffusivitiesSpreadAWetSpotIntoAnEllipse) {
   // second moment along the warp (x) grows as 2 D_warp t and along the weft
   // (z) as 2 D_weft t, so the patch (S > 0.005) becomes an ellipse with axes in the
   // ratio sqrt(D_warp / D_weft) = 1.73 (3, the largest ratio the pair
-  // weights reproduce exactly: FickDiffusion.cpp).
+  // weights reproduce exactly: Stages/FickDiffusion.cpp).
   const double Du = 0.003, Dv = 0.001;
   test::TestRegistry reg(SOAK_PLUGIN_DIR);
   auto sim = test::makeSimulation(

@@ -15,6 +15,15 @@ inline constexpr const char* kEmitStage = "wet.emit";
 inline constexpr const char* kStickStage = "wet.stick";
 inline constexpr const char* kDryStage = "wet.dry";
 
+// Particle channels WetCloth adds (per slot; water's entries stay 0), which
+// other plugins may read and write by name (ParticleState::findChannel):
+// held water and buffered water (kg) of each cloth particle, its
+// saturation S (Eq. 10) and volume V (m^3).
+inline constexpr const char* kHeldWaterChannel = "held_water";
+inline constexpr const char* kBufferChannel = "buffer";
+inline constexpr const char* kSaturationChannel = "saturation";
+inline constexpr const char* kVolumeChannel = "volume";
+
 // Inserts the stages the scene switches on (WetClothModule::addStages).
 void addWetStages(Pipeline& pipeline, WetState& state);
 
