@@ -21,10 +21,12 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* de
       const float thi = c.thickness[p.id[i]];
       Vec3 sum(0.f, 0.f, 0.f);
       int count = 0;
-      // The candidates are cloth particles other than i and its rest-shape
-      // neighbours (ClothContactLists.h).
+      const int vi = p.id[i];
+      const Vec3 resti = c.restPosition[vi];
+      // The candidates: cloth particles other than i (ClothContactLists.h).
       forEachContactCandidate(n, v, i, lanes, [&](int j) {
-        const float contact = 0.5f * (thi + c.thickness[p.id[j]]);
+        const int vj = p.id[j];
+        const float contact = 0.5f * (thi + c.thickness[vj]);
         const Float4 xj4 = p.predicted[j];
         const Vec3 xij = xi - xj4.xyz();
         // The pair's normal is taken from the positions at the start of the
@@ -33,6 +35,7 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* de
         const Vec3 xij0 = p.position[i].xyz() - p.position[j].xyz();
         const float r0sq = lengthSquared(xij0);
         if (r0sq >= 4.f * contact * contact && lengthSquared(xij) >= contact * contact) return;
+        if (p.phase[j] == p.phase[i] && lengthSquared(resti - c.restPosition[vj]) < 1.44f * contact * contact) return;
         const Vec3 nrm = r0sq > 1e-18f ? xij0 / sqrtf(r0sq) : normalizedOrZero(xij);
         const float along = dot(xij, nrm);
         if (along >= contact || lengthSquared(xij - nrm * along) >= contact * contact) return;
@@ -58,11 +61,12 @@ SOAK_INLINE bool touchesOneRing(const ClothView& c, int v, const ClothTriangle& 
 }
 }  // namespace
 
-void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta) {
+void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta) {
+  const ClothView c = n.cloth;
   if (c.triangleCount == 0) return;
   snapshotTriangles(d, p, c);
   const ClothSlots cloth = clothSlots(c);
-  forEachClothParticleLanes(d, cloth, SOAK_LAMBDA(int i, Lanes lanes) {
+  forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
     const Float4 xi4 = p.predicted[i];
     if (xi4.w == 0.f) {
       if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
@@ -84,7 +88,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
     // most vertices stop here. One lane (the CPU) goes straight on.
     if (lanes.size > 1) {
       bool due = false;
-      forEachTriangleNearPath(g, p, c, x0, start, lanes, [&](int k, int) {
+      forEachCandidateTriangleNearPath(n, p, v, i, x0, start, lanes, [&](int k, int) {
         if (!due) due = !isZero(correction(k, start));
       });
       const bool any = laneAny(lanes, due);
@@ -95,7 +99,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothVi
       }
     }
     Vec3 x = start;
-    forEachTriangleNearPath(g, p, c, x0, start, Lanes{}, [&](int k, int j) {
+    forEachCandidateTriangleNearPath(n, p, v, i, x0, start, Lanes{}, [&](int k, int j) {
       const Vec3 corr = correction(k, x);
       if (isZero(corr)) return;
       const ClothTriangle t = c.firstVertexTriangles[k];

@@ -18,8 +18,7 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* de
 // triangles) between its start-of-step and predicted positions is put back on
 // the side it came from, thickness / 2 away. Particle contact alone lets a
 // vertex slip between the other layer's vertices when a fold flattens.
-// `g` is any grid that holds the cloth particles: the full grid, or the
-// cloth's own (ClothSystem::grid(), which does not step over water).
-void resolveVertexTriangleContacts(Device d, ParticleView p, GridView g, ClothView c, Vec3* delta);
+// The triangles come from the step's candidate pairs `n`.
+void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta);
 
 }  // namespace soak

@@ -1,23 +1,26 @@
 #pragma once
 // Candidate pairs for cloth contact, found once a step and read by every
-// contact pass of every cloth sub-step.
+// contact pass of every cloth sub-step: particle contact and vertex-triangle
+// contact (ClothContact.h).
 //
 // A contact pass walking the 27 cells of the cloth grid visits 150-300
 // cloth particles (cells are the water's support radius, 4 cm; a sheet's
 // vertices are 1 cm apart), of which a handful come within the contact
-// distance c_ij = (th_i + th_j) / 2. Over one step a pair can only touch
-// if it starts close: its distance at the start of the step, |x_i - x_j|,
-// is at most the contact distance plus how far the two move. The lists
-// keep, for each cloth particle, the cloth particles j with
+// distance c_ij = (th_i + th_j) / 2; the vertex-triangle pass walks a box
+// of cells around each vertex's path for the triangles whose vertices lie
+// within the triangle reach t = 1.5 l_max + th_max / 2 of it
+// (TriangleCoupling.h). Over one step a pair can only touch if it starts
+// close: its distance at the start of the step, |x_i - x_j|, is at most
+// the reach plus how far the two move. The lists keep, for each cloth
+// particle, the cloth particles j with
 //
-//     |x_i - x_j| < 3 c_ij + 3 (|v_i| + |v_j|) dt     (x, v at the step's start)
+//     |x_i - x_j| < max(3 c_ij, t) + 3 (|v_i| + |v_j|) dt     (x, v at the step's start)
 //
-// that are not the same cloth's neighbours in the rest shape (closer than
-// 1.2 c_ij there), in the grid's order. Measured on every contact that acted
+// in the grid's order. Measured on every particle contact that acted
 // (small fig9b 2.5 s, fig3b 2 s on chebyshev 8 x 12, CPU), the pair's start
-// distance was at most 0.35 of that reach; on a sheet crumpling onto the
-// floor (ClothContactListsTest), every pair that ended a step within 1.5
-// c_ij had started within 0.54 of it.
+// distance was at most 0.35 of 3 c_ij + 3 (|v_i| + |v_j|) dt; on a sheet
+// crumpling onto the floor (ClothContactListsTest), every pair that ended a
+// step within 1.5 c_ij had started within 0.54 of it.
 //
 // An item without a list (past the buffer's capacity, PairLists.h) walks
 // the grid and applies the same test to the same start positions, so it
@@ -26,6 +29,7 @@
 // the lists' sizing need not be kept by checkpoints.
 #include "Cloth/ClothSystem.h"
 #include "Cloth/ForEachClothParticle.h"
+#include "Coupling/TriangleCoupling.h"
 #include "Neighbours/GridView.h"
 #include "Neighbours/PairLists.h"
 #include "Particles/ParticleState.h"
@@ -50,9 +54,7 @@ SOAK_INLINE bool mayTouchThisStep(const ClothContactStep& s, const ClothView& c,
   if (j == i || !isCloth(s.phase[j])) return false;
   const int vi = s.id[i], vj = s.id[j];
   const float contact = 0.5f * (c.thickness[vi] + c.thickness[vj]);
-  if (s.phase[j] == s.phase[i] && lengthSquared(c.restPosition[vi] - c.restPosition[vj]) < 1.44f * contact * contact)
-    return false;
-  const float reach = kContactReachDistances * contact +
+  const float reach = maxf(kContactReachDistances * contact, triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness)) +
                       kContactReachMotion * (length(s.velocity[i]) + length(s.velocity[j])) * s.dt;
   return lengthSquared(s.position[i].xyz() - s.position[j].xyz()) < reach * reach;
 }
@@ -77,6 +79,27 @@ SOAK_INLINE void forEachContactCandidate(const ClothContactView& n, int v, int i
   }
   const int s = n.lists.start[v], e = s + n.lists.count[v];
   for (int k = s + lanes.index; k < e; k += lanes.size) f(n.lists.index[k]);
+}
+
+// Calls f(k, j) for the triangles that can matter to item v (its particle
+// slot i) moving from x0 to x (TriangleCoupling.h's forEachTriangleNearPath
+// over the candidates instead of the grid): k is the triangle's place in
+// c.firstVertexTriangles, j the slot of its first vertex.
+template <class F>
+SOAK_INLINE void forEachCandidateTriangleNearPath(const ClothContactView& n, const ParticleView& p, int v, int i,
+                                                   Vec3 x0, Vec3 x, const Lanes& lanes, F&& f) {
+  const ClothView& c = n.cloth;
+  const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
+  const Vec3 path = x - x0;
+  const float len2 = lengthSquared(path);
+  forEachContactCandidate(n, v, i, lanes, [&](int j) {
+    const Vec3 y = p.predicted[j].xyz();
+    const float t = len2 > 0.f ? minf(maxf(dot(y - x0, path) / len2, 0.f), 1.f) : 0.f;
+    if (lengthSquared(y - (x0 + path * t)) > reach * reach) return;
+    const int vj = p.id[j];
+    const int end = c.firstVertexTriangleStart[vj + 1];
+    for (int k = c.firstVertexTriangleStart[vj]; k < end; ++k) f(k, j);
+  });
 }
 
 class ClothContactLists {

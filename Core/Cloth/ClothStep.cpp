@@ -14,11 +14,10 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   const ClothView c = cloth.view();
   contactDelta_.resize(p.count);
   // The pairs that may touch during the step, once (ClothContactLists.h).
-  if (s.contactPasses > 0) contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
-  const GridView clothGrid = cloth.grid();
+  contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
   auto contacts = [&](ParticleView view) {
     resolveClothContacts(device_, view, contactLists_.view(), contactDelta_.data(), s.contactPasses);
-    resolveVertexTriangleContacts(device_, view, clothGrid, c, contactDelta_.data());
+    resolveVertexTriangleContacts(device_, view, contactLists_.view(), contactDelta_.data());
   };
   substepped_ = s.substeps > 1;
   if (substepped_) {

@@ -109,8 +109,8 @@ TEST(ClothContactLists, ListsAreTheGridsCandidatesThatMayTouchAndContactGivesThe
       if (j == i) return;
       const int vi = p.id[i], vj = p.id[j];
       const float contact = 0.5f * (c.thickness[vi] + c.thickness[vj]);
-      if (lengthSquared(c.restPosition[vi] - c.restPosition[vj]) < 1.44f * contact * contact) return;
-      const float reach = 3.f * contact + 3.f * (length(p.velocity[i]) + length(p.velocity[j])) * dt;
+      const float triangles = 1.5f * c.maxEdgeLength + 0.5f * c.maxThickness;
+      const float reach = std::max(3.f * contact, triangles) + 3.f * (length(p.velocity[i]) + length(p.velocity[j])) * dt;
       if (lengthSquared(p.position[i].xyz() - p.position[j].xyz()) < reach * reach) expected.push_back(j);
     });
     EXPECT_EQ(fromList, expected) << "cloth particle " << v;
