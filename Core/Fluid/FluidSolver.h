@@ -10,7 +10,7 @@
 #include "Neighbours/GridView.h"
 #include "Particles/ParticleState.h"
 #include "Physics/Collider.h"
-#include "Simulation/Settings.h"
+#include "Fluid/WaterSettings.h"
 
 namespace soak {
 

@@ -11,7 +11,7 @@
 #include "Cloth/ClothSystem.h"
 #include "Output/FrameData.h"
 #include "Registry/Module.h"
-#include "Simulation/Settings.h"
+#include "Fluid/WaterSettings.h"
 
 namespace soak {
 
