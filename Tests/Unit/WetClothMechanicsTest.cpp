@@ -1,0 +1,140 @@
+// The wetting model's mechanical effects (WetCloth plugin): wet cloth lets
+// water through (Eq. 22), held water weighs on the cloth, damp cloth
+// sticks to itself (Eq. 20), and a wet sheet sags more than a dry one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "Support/TestScenes.h"
+
+using namespace soak;
+
+namespace {
+
+std::unique_ptr<Simulation> wetScene(const std::string& body, test::TestRegistry& reg,
+                                     const std::vector<std::string>& overrides = {}) {
+  return test::makeSimulation("<Scene>\n" + body + "\n</Scene>", Device::Cpu, reg, overrides);
+}
+
+std::vector<float> channel(Simulation& sim, const std::string& name) {
+  const int c = sim.particles.findChannel(name);
+  EXPECT_GE(c, 0) << name;
+  return c >= 0 ? sim.particles.downloadChannel(c) : std::vector<float>();
+}
+
+// A still sheet: gravity 1e-6 m/s^2 gives the gravity terms their
+// direction without moving anything.
+const char* kStill = "<Simulation gravity='0 -0.000001 0'/>";
+
+}  // namespace
+
+TEST(WetCloth, WetClothLetsWaterThroughAndDryClothDoesNot) {
+  // Eq. 22: a block dropped on a pinned horizontal sheet. Dry (kappa = 1)
+  // no water gets below; saturated (held at S^EW plus a buffer up to S^MAX,
+  // kappa = 0) water passes.
+  auto below = [](float saturation) {
+    test::TestRegistry reg(SOAK_PLUGIN_DIR);
+    auto sim = wetScene(
+        "<Cloth origin='-0.3 0.5 -0.3' axisU='1 0 0' axisV='0 0 1' width='0.6' height='0.6' cellsU='30' cellsV='30' "
+        "pinCorners='u0v0 u1v0 u0v1 u1v1'/><WaterBlock min='-0.08 0.56 -0.08' max='0.08 0.7 0.08'/>"
+        "<WetCloth initialSaturation='" +
+            std::to_string(saturation) + "' absorptionRate='0' emission='false' sticking='false'/>",
+        reg);
+    for (int s = 0; s < 60; ++s) sim->step();
+    const std::vector<int> phase = sim->particles.downloadPhases();
+    const std::vector<Float4> x = sim->particles.downloadPositions();
+    const std::vector<Vec3> cloth = sim->cloth.downloadVertexPositions(sim->particles, 0);
+    float lowest = 1e9f;
+    for (const Vec3& v : cloth) lowest = std::min(lowest, v.y);
+    int n = 0;
+    // Below the sheet and well inside its footprint (water that runs off
+    // the edges falls beside it).
+    for (std::size_t i = 0; i < x.size(); ++i)
+      n += isWater(phase[i]) && x[i].y < lowest - 0.02f && std::fabs(x[i].x) < 0.2f && std::fabs(x[i].z) < 0.2f;
+    return n;
+  };
+  const int dry = below(0.f), damp = below(0.3f), wet = below(0.4f);
+  std::printf("water particles below the sheet after 60 steps: dry %d, S = 0.3 (kappa = 0.36) %d, saturated "
+              "(kappa = 0) %d\n",
+              dry, damp, wet);
+  EXPECT_EQ(dry, 0);
+  EXPECT_GT(wet, 20);
+  EXPECT_LT(damp, wet);  // the fraction passing grows with saturation
+}
+
+TEST(WetCloth, HeldWaterWeighsOnTheCloth) {
+  // Wet weight: a cloth particle's mass is its dry mass plus its held and
+  // buffered water.
+  test::TestRegistry reg(SOAK_PLUGIN_DIR);
+  auto sim = wetScene(
+      "<Cloth origin='-0.2 1 0' axisU='1 0 0' axisV='0 -1 0' width='0.4' height='0.4' cellsU='10' cellsV='10' "
+      "pinCorners='u0v0 u1v0' particleMass='0.005'/><WetCloth initialSaturation='0.38' emission='false'/>",
+      reg);
+  sim->step();
+  const std::vector<float> held = channel(*sim, "held_water"), buffer = channel(*sim, "buffer");
+  const std::vector<float> mass = sim->particles.downloadMasses();
+  const std::vector<Float4> x = sim->particles.downloadPositions();
+  double worst = 0.0, heaviest = 0.0;
+  for (std::size_t i = 0; i < mass.size(); ++i) {
+    worst = std::max(worst, std::fabs(double(mass[i]) - (0.005 + held[i] + buffer[i])));
+    heaviest = std::max(heaviest, double(mass[i]));
+    if (x[i].w > 0.f) EXPECT_NEAR(x[i].w, 1.f / mass[i], 1e-3f / mass[i]);
+  }
+  std::printf("heaviest cloth particle %.4f kg (dry 0.005)\n", heaviest);
+  EXPECT_LT(worst, 1e-7);
+  EXPECT_GT(heaviest, 0.0055);
+}
+
+TEST(WetCloth, DampClothSticksAndDryClothDoesNot) {
+  // Eq. 20: two sheets 2 cm apart (within reach of each other's thickness),
+  // held at their corners, no gravity to speak of. At S^T they pull
+  // together; dry, Eq. 20 is zero (eta^ad = kappa^ad S^T^2) and they stay apart.
+  auto gapAfter = [](float saturation) {
+    test::TestRegistry reg(SOAK_PLUGIN_DIR);
+    auto sim = wetScene(std::string(kStill) +
+                            "<Cloth name='lower' origin='-0.2 0.5 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
+                            "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015'/>"
+                            "<Cloth name='upper' origin='-0.2 0.52 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
+                            "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015'/>"
+                            "<WetCloth initialSaturation='" +
+                            std::to_string(saturation) + "' emission='false' diffusionIterations='0'/>",
+                        reg);
+    for (int s = 0; s < 8; ++s) sim->step();
+    const std::vector<Vec3> lower = sim->cloth.downloadVertexPositions(sim->particles, 0);
+    const std::vector<Vec3> upper = sim->cloth.downloadVertexPositions(sim->particles, 1);
+    return upper[220].y - lower[220].y;  // the centre vertex (10, 10) of both
+  };
+  const float dry = gapAfter(0.f), drier = gapAfter(0.06f), damp = gapAfter(0.12f), wetter = gapAfter(0.25f);
+  std::printf("gap between the sheets' centres after 8 steps: S = 0 %.4f m, 0.06 %.4f, S^T = 0.12 %.4f, 0.25 %.4f\n",
+              dry, drier, damp, wetter);
+  EXPECT_NEAR(dry, 0.02f, 1e-4f);
+  EXPECT_LT(damp, 0.019f);  // attractive
+  EXPECT_LT(damp, drier);   // and strongest at S^T
+  EXPECT_LT(damp, wetter);
+}
+
+TEST(WetCloth, WetSheetSagsMoreThanDry) {
+  // Wet weight: a sheet pinned at four corners holding water at S = 0.35
+  // hangs lower than the same sheet dry. The sheet is elastic (XPBD
+  // compliance, no tethers, iterations enough to converge): its strain
+  // under its own weight grows with the weight. (With PBD stiffness, scaling every mass alike changes no
+  // correction, so a uniformly wet sheet would hang exactly as a dry one.)
+  auto lowest = [](float saturation) {
+    test::TestRegistry reg(SOAK_PLUGIN_DIR);
+    auto sim = wetScene("<Simulation clothIterations='100'/>"
+                        "<Cloth origin='-0.3 0.5 -0.3' axisU='1 0 0' axisV='0 0 1' width='0.6' height='0.6' "
+                        "cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' tethers='false' model='xpbd' "
+                        "stretchCompliance='0.001'/><WetCloth initialSaturation='" +
+                            std::to_string(saturation) + "' emission='false' sticking='false'/>",
+                        reg);
+    for (int s = 0; s < 150; ++s) sim->step();
+    float y = 1e9f;
+    for (const Vec3& v : sim->cloth.downloadVertexPositions(sim->particles, 0)) y = std::min(y, v.y);
+    return y;
+  };
+  const float dry = lowest(0.f), wet = lowest(0.35f);
+  std::printf("lowest point after 150 steps: dry %.4f m, wet %.4f m\n", dry, wet);
+  EXPECT_LT(wet, dry - 0.005f);
+}
