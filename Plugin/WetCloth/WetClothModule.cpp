@@ -15,8 +15,8 @@ namespace {
 
 class WetClothModule : public Module {
  public:
-  WetClothModule(const WetParams& params, const DryingParams& drying, float initialSaturation, std::string where)
-      : w_(params), drying_(drying), initialSaturation_(initialSaturation), where_(std::move(where)) {}
+  WetClothModule(const WetParams& params, const DryingParams& drying, std::string where)
+      : w_(params), drying_(drying), where_(std::move(where)) {}
 
   void setup(Simulation& sim) override {
     const WetParams& w = w_;
@@ -34,7 +34,7 @@ class WetClothModule : public Module {
     st_ = std::make_unique<WetState>(sim.device());
     st_->w = w_;
     st_->drying = drying_;
-    st_->initialSaturation = initialSaturation_;
+    st_->initialSaturation = w_.initialSaturation;
     st_->where = where_;
     ParticleState& ps = sim.particles;
     st_->held = ps.addChannel(kHeldWaterChannel);
@@ -185,7 +185,6 @@ class WetClothModule : public Module {
 
   WetParams w_;
   DryingParams drying_;
-  float initialSaturation_ = 0.f;
   std::string where_;
   std::unique_ptr<WetState> st_;  // on the simulation's device, from setup
   double maxListCapacity_ = 0.0;  // a checkpoint's cloth list sizing beyond it is refused
@@ -194,8 +193,8 @@ class WetClothModule : public Module {
 }  // namespace
 
 std::unique_ptr<Module> makeWetClothModule(const WetParams& params, const DryingParams& drying,
-                                           float initialSaturation, const std::string& where) {
-  return std::make_unique<WetClothModule>(params, drying, initialSaturation, where);
+                                           const std::string& where) {
+  return std::make_unique<WetClothModule>(params, drying, where);
 }
 
 }  // namespace soak::wet

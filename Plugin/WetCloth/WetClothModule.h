@@ -13,6 +13,6 @@ namespace soak::wet {
 // (Stages/StageTable.cpp), places the drips at each step's start, keeps
 // its state in checkpoints and adds its stats.csv columns.
 std::unique_ptr<Module> makeWetClothModule(const WetParams& params, const DryingParams& drying,
-                                           float initialSaturation, const std::string& where);
+                                           const std::string& where);
 
 }  // namespace soak::wet

@@ -1,6 +1,8 @@
 #pragma once
-// Parameters of the wetting model (paper Section 4, Table 1). Declared once,
-// with units, ranges and descriptions, in WetClothPlugin.cpp.
+// Parameters of the wetting model (paper Section 4, Table 1). The defaults
+// here are the scene's defaults: WetClothPlugin.cpp binds each member to its
+// scene attribute (Registry/ParamBinding.h), with units, ranges and
+// descriptions.
 #include <algorithm>
 #include <cmath>
 
@@ -44,6 +46,7 @@ struct WetParams {
   float kappaAd = 0.3f;        // Eq. 20 (N)
   float etaAd = -1.f;          // Eq. 20 (N); < 0: kappaAd * S^T^2 (no pull between dry particles)
   float clothRestDensity = 800.f;  // Table 1, for Psi of Eq. 19
+  float initialSaturation = 0.f;  // every cloth particle starts holding S V / c (Figure 6's scenes)
   bool emission = true, sticking = true, wetWeight = true;
   // Beyond the paper (Doc/model.md, "Wet stiffness and friction"): at
   // saturation S the bends are 1 - wetBendSoftening S / S^MAX as stiff and

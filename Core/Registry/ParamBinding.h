@@ -1,0 +1,96 @@
+#pragma once
+// Parameters declared once and bound to the struct member they fill:
+//
+//   ParamBinding<WetParams> bind(decl);
+//   bind.real("sMax", &WetParams::sMax, "", "S^MAX ...", 0.0, 1.0, true)
+//       .real("absorptionRate", &WetParams::kappaA, "1/s", "...", 0.0, 1e4, false, kPaperTimeStep);
+//   ...  decl.create([bind](const ElementParams& e) { WetParams w = bind.read(e); ... });
+//
+// Each call declares the parameter on the element (ElementDecl: parsing,
+// validation, `soak params` and the docs) with the member's default in
+// T{} as its default, and remembers how to fill the member from a validated
+// element. A default is then written once (in T), a misspelt member is a
+// compile error, and the scene's name, the member and the kernel's
+// argument cannot drift apart. `scale` converts the scene's unit to the
+// member's (member = scene value x scale).
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "Registry/ElementDecl.h"
+
+namespace soak {
+
+namespace detail {
+// The default as the scene would write it: the decimal text of
+// `value / scale`, with 6 significant digits (%g) or as many more as it
+// takes to read back (x scale, as a float) to exactly `value`.
+inline std::string sceneText(float value, double scale) {
+  char b[40];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(b, sizeof b, "%.*g", digits, double(value) / scale);
+    if (float(std::strtod(b, nullptr) * scale) == value) break;
+  }
+  return b;
+}
+}  // namespace detail
+
+template <class T>
+class ParamBinding {
+ public:
+  explicit ParamBinding(ElementDecl& decl) : decl_(&decl) {}
+
+  ParamBinding& real(const std::string& name, float T::*member, const std::string& unit, const std::string& desc,
+                     double lo, double hi, bool loExclusive = false, double scale = 1.0) {
+    decl_->real(name, unit, detail::sceneText(defaults_.*member, scale), desc, lo, hi, loExclusive);
+    setters_.push_back([name, member, scale](const ElementParams& e, T& t) {
+      t.*member = float(e.real(name) * scale);
+    });
+    return *this;
+  }
+  ParamBinding& integer(const std::string& name, int T::*member, const std::string& desc, double lo, double hi) {
+    decl_->integer(name, std::to_string(defaults_.*member), desc, lo, hi);
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = int(e.integer(name)); });
+    return *this;
+  }
+  ParamBinding& boolean(const std::string& name, bool T::*member, const std::string& desc) {
+    decl_->boolean(name, defaults_.*member ? "true" : "false", desc);
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.boolean(name); });
+    return *this;
+  }
+  // A choice of named values of an enum (or any comparable type).
+  template <class E>
+  ParamBinding& choice(const std::string& name, E T::*member, const std::vector<std::pair<std::string, E>>& options,
+                       const std::string& desc) {
+    std::vector<std::string> names;
+    std::string def;
+    for (const auto& o : options) {
+      names.push_back(o.first);
+      if (o.second == defaults_.*member) def = o.first;
+    }
+    decl_->choice(name, names, def, desc);
+    setters_.push_back([name, member, options](const ElementParams& e, T& t) {
+      const std::string& v = e.text(name);
+      for (const auto& o : options)
+        if (o.first == v) t.*member = o.second;
+    });
+    return *this;
+  }
+
+  // T{} with every bound member filled from the element.
+  T read(const ElementParams& e) const {
+    T t = defaults_;
+    for (const auto& set : setters_) set(e, t);
+    return t;
+  }
+
+ private:
+  ElementDecl* decl_;  // declaring only: the binding may outlive it
+  T defaults_{};
+  std::vector<std::function<void(const ElementParams&, T&)>> setters_;
+};
+
+}  // namespace soak
