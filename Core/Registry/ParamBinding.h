@@ -28,13 +28,17 @@ namespace detail {
 // The default as the scene would write it: the decimal text of
 // `value / scale`, with 6 significant digits (%g) or as many more as it
 // takes to read back (x scale, as a float) to exactly `value`.
-inline std::string sceneText(float value, double scale) {
+template <class V>
+std::string sceneText(V value, double scale) {
   char b[40];
   for (int digits = 6; digits <= 17; ++digits) {
     std::snprintf(b, sizeof b, "%.*g", digits, double(value) / scale);
-    if (float(std::strtod(b, nullptr) * scale) == value) break;
+    if (V(std::strtod(b, nullptr) * scale) == value) break;
   }
   return b;
+}
+inline std::string sceneText(Vec3 v) {
+  return sceneText(v.x, 1.0) + " " + sceneText(v.y, 1.0) + " " + sceneText(v.z, 1.0);
 }
 }  // namespace detail
 
@@ -51,9 +55,21 @@ class ParamBinding {
     });
     return *this;
   }
-  ParamBinding& integer(const std::string& name, int T::*member, const std::string& desc, double lo, double hi) {
+  ParamBinding& real(const std::string& name, double T::*member, const std::string& unit, const std::string& desc,
+                     double lo, double hi, bool loExclusive = false) {
+    decl_->real(name, unit, detail::sceneText(defaults_.*member, 1.0), desc, lo, hi, loExclusive);
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.real(name); });
+    return *this;
+  }
+  ParamBinding& vector(const std::string& name, Vec3 T::*member, const std::string& unit, const std::string& desc) {
+    decl_->vector(name, unit, detail::sceneText(defaults_.*member), desc);
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.vector(name); });
+    return *this;
+  }
+  template <class I>  // int, long long
+  ParamBinding& integer(const std::string& name, I T::*member, const std::string& desc, double lo, double hi) {
     decl_->integer(name, std::to_string(defaults_.*member), desc, lo, hi);
-    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = int(e.integer(name)); });
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = I(e.integer(name)); });
     return *this;
   }
   ParamBinding& boolean(const std::string& name, bool T::*member, const std::string& desc) {
@@ -83,8 +99,12 @@ class ParamBinding {
   // T{} with every bound member filled from the element.
   T read(const ElementParams& e) const {
     T t = defaults_;
-    for (const auto& set : setters_) set(e, t);
+    fill(e, t);
     return t;
+  }
+  // Only the bound members of `t` (the others keep their values).
+  void fill(const ElementParams& e, T& t) const {
+    for (const auto& set : setters_) set(e, t);
   }
 
  private:

@@ -7,6 +7,7 @@
 #include "Base/Error.h"
 #include "Base/MessageText.h"
 #include "Registry/ModuleRegistry.h"
+#include "Registry/ParamBinding.h"
 #include "Simulation/ElementGroups.h"
 #include "Simulation/Simulation.h"
 
@@ -17,23 +18,12 @@ namespace {
 
 class SimulationModule : public Module {
  public:
-  explicit SimulationModule(const ElementParams& p) : p_(p) {}
+  SimulationModule(const ElementParams& p, ParamBinding<SimulationSettings> settings,
+                   ParamBinding<ResourceLimits> limits)
+      : p_(p), settings_(std::move(settings)), limits_(std::move(limits)) {}
   void configure(Simulation& sim) override {
-    sim.settings.timeStep = p_.real("timeStep");
-    sim.settings.duration = p_.real("duration");
-    sim.settings.frameRate = p_.real("frameRate");
-    sim.settings.gravity = p_.vector("gravity");
-    sim.settings.maxSpeed = p_.realf("maxSpeed");
-    sim.settings.clothIterations = int(p_.integer("clothIterations"));
-    sim.settings.clothSubsteps = int(p_.integer("clothSubsteps"));
-    sim.settings.clothSpectralRadius = p_.realf("clothSpectralRadius");
-    sim.settings.domainMin = p_.vector("domainMin");
-    sim.settings.domainMax = p_.vector("domainMax");
-    sim.couplingPasses = int(p_.integer("couplingPasses"));
-    sim.contactPasses = int(p_.integer("contactPasses"));
-    sim.settings.limits.maxParticles = p_.integer("maxParticles");
-    sim.settings.limits.maxStepsPerFrame = p_.integer("maxStepsPerFrame");
-    sim.settings.limits.maxCellParticles = p_.integer("maxCellParticles");
+    settings_.fill(p_, sim.settings);
+    limits_.fill(p_, sim.settings.limits);
     sim.settings.where = p_.where();
     const Vec3 lo = sim.settings.domainMin, hi = sim.settings.domainMax;
     if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
@@ -53,28 +43,21 @@ class SimulationModule : public Module {
 
  private:
   ElementParams p_;
+  ParamBinding<SimulationSettings> settings_;
+  ParamBinding<ResourceLimits> limits_;
 };
 
 class WaterModule : public Module {
  public:
-  explicit WaterModule(const ElementParams& p) : p_(p) {}
+  WaterModule(const ElementParams& p, ParamBinding<WaterSettings> water) : p_(p), water_(std::move(water)) {}
   void configure(Simulation& sim) override {
-    sim.water.spacing = p_.realf("spacing");
-    sim.water.supportRadius = p_.realf("supportRadius");
-    sim.water.restDensity = p_.realf("restDensity");
-    sim.water.particleMass = p_.realf("particleMass");
-    sim.water.iterations = int(p_.integer("iterations"));
-    sim.water.relaxation = p_.realf("relaxation");
-    sim.water.artificialPressure = p_.realf("artificialPressure");
-    sim.water.artificialPressureRadius = p_.realf("artificialPressureRadius");
-    sim.water.viscosity = p_.realf("viscosity");
-    sim.water.vorticity = p_.realf("vorticity");
-    sim.water.neighbourSkin = p_.realf("neighbourSkin");
+    water_.fill(p_, sim.water);
     sim.water.where = p_.where();
   }
 
  private:
   ElementParams p_;
+  ParamBinding<WaterSettings> water_;
 };
 
 class WaterBlockModule : public Module {
@@ -205,61 +188,76 @@ class NoModule : public Module {};
 }  // namespace
 
 void registerCoreElements(ModuleRegistry& r) {
-  r.add(ElementDecl("Simulation", "Time stepping, output rate and gravity.", "Simulation")
-            .real("timeStep", "s", "0.015", "Time step (Table 1).", 0.0, 1.0, true)
-            .real("duration", "s", "4", "Simulated time of a run (`--time` and `--frames` override it).", 0.0,
-                  1e9, true)
-            .real("frameRate", "1/s", "30", "Output frames per simulated second, independent of the time step.",
-                  0.0, 1e6, true)
-            .vector("gravity", "m/s^2", "0 -9.81 0", "Gravitational acceleration; +y is up by default.")
-            .real("maxSpeed", "m/s", "50", "A particle faster than this is reported as an instability.", 0.0,
-                  1e9, true)
-            .integer("clothIterations", "8", "Cloth solver iterations n_s per step (Eq. 5), per cloth sub-step.", 1,
-                     1000)
-            .integer("clothSubsteps", "1",
-                     "Cloth sub-steps per step: gravity, constraints and colliders of the cloth advance in steps "
-                     "of timeStep / clothSubsteps (less stretch than the same number of iterations in one step).",
-                     1, 100)
-            .real("clothSpectralRadius", "", "0.6",
-                  "Cloth.model=chebyshev: the spectral radius rho its Chebyshev weights assume (Wang 2015); "
-                  "nearer 1 converges further per iteration, but from 0.8 a hanging sheet never comes to rest "
-                  "and from 0.9 large sheets can diverge (Doc/design.md, \"Cloth solver\").",
-                  0.0, 0.9999)
-            .integer("couplingPasses", "2", "Passes of the water-triangle constraint (Eq. 21) per step.", 1, 100)
-            .integer("contactPasses", "2", "Passes of cloth self and cloth-cloth contact per step.", 0, 100)
-            .vector("domainMin", "m", "-1000 -1000 -1000", "Water below this corner is removed (drained).")
-            .vector("domainMax", "m", "1000 1000 1000", "Water above this corner is removed (drained).")
-            .integer("maxParticles", "0",
-                     "Limit: most particles the run may hold, counting all its nozzles would emit up to its end "
-                     "(0: as many as the device's memory holds at about 512 bytes each).",
-                     0, 2000000000)
-            .integer("maxStepsPerFrame", "100000", "Limit: most time steps between two output frames.", 1,
-                     2000000000)
-            .integer("maxCellParticles", "4096",
-                     "Limit: most particles a neighbour-grid cell (edge: the largest support radius) may hold at "
-                     "rest spacing: (h / spacing)^3 for water, (h / edge length)^2 for a cloth sheet.",
-                     1, 2000000000)
-            .makeUnique()
-            .create([](const ElementParams& p) { return std::make_unique<SimulationModule>(p); }));
-  r.add(ElementDecl("Water", "Properties of water particles (Table 1).", "Water")
-            .real("spacing", "m", "0.02", "Initial particle spacing r0.", 0.0, 10.0, true)
-            .real("supportRadius", "m", "0.04", "SPH support radius h.", 0.0, 10.0, true)
-            .real("restDensity", "kg/m^3", "1000", "Rest density rho0 of water.", 0.0, 1e6, true)
-            .real("particleMass", "kg", "0.0082", "Mass of a full water particle.", 0.0, 1e6, true)
-            .integer("iterations", "8", "Density constraint iterations per step.", 1, 1000)
-            .real("relaxation", "", "0.2",
-                  "Constraint relaxation epsilon, relative to the denominator of a particle at rest.", 0.0, 1e6)
-            .real("artificialPressure", "", "0.001",
-                  "k of the s_corr term, as a fraction of a full density error's correction.", 0.0, 1.0)
-            .real("artificialPressureRadius", "", "0.2", "delta q of s_corr, relative to h.", 0.0, 1.0, true)
-            .real("viscosity", "", "0.01", "XSPH viscosity c.", 0.0, 1.0)
-            .real("vorticity", "m/s", "0", "Vorticity confinement epsilon (0: off).", 0.0, 1e3)
-            .real("neighbourSkin", "", "0.1",
-                  "The density iterations visit the pairs within (1 + skin) h found at the start of the step "
-                  "(a large value, e.g. 100, visits every grid candidate, as a query per iteration would).",
-                  0.0, 1e3)
-            .makeUnique()
-            .create([](const ElementParams& p) { return std::make_unique<WaterModule>(p); }));
+  // <Simulation> and <Water>: each parameter bound to the settings member
+  // it fills, its default the member's (Registry/ParamBinding.h).
+  {
+    ElementDecl decl("Simulation", "Time stepping, output rate and gravity.", "Simulation");
+    ParamBinding<SimulationSettings> settings(decl);
+    using S = SimulationSettings;
+    settings.real("timeStep", &S::timeStep, "s", "Time step (Table 1).", 0.0, 1.0, true)
+        .real("duration", &S::duration, "s", "Simulated time of a run (`--time` and `--frames` override it).", 0.0,
+              1e9, true)
+        .real("frameRate", &S::frameRate, "1/s", "Output frames per simulated second, independent of the time step.",
+              0.0, 1e6, true)
+        .vector("gravity", &S::gravity, "m/s^2", "Gravitational acceleration; +y is up by default.")
+        .real("maxSpeed", &S::maxSpeed, "m/s", "A particle faster than this is reported as an instability.", 0.0,
+              1e9, true)
+        .integer("clothIterations", &S::clothIterations,
+                 "Cloth solver iterations n_s per step (Eq. 5), per cloth sub-step.", 1, 1000)
+        .integer("clothSubsteps", &S::clothSubsteps,
+                 "Cloth sub-steps per step: gravity, constraints and colliders of the cloth advance in steps "
+                 "of timeStep / clothSubsteps (less stretch than the same number of iterations in one step).",
+                 1, 100)
+        .real("clothSpectralRadius", &S::clothSpectralRadius, "",
+              "Cloth.model=chebyshev: the spectral radius rho its Chebyshev weights assume (Wang 2015); "
+              "nearer 1 converges further per iteration, but from 0.8 a hanging sheet never comes to rest "
+              "and from 0.9 large sheets can diverge (Doc/design.md, \"Cloth solver\").",
+              0.0, 0.9999)
+        .integer("couplingPasses", &S::couplingPasses, "Passes of the water-triangle constraint (Eq. 21) per step.",
+                 1, 100)
+        .integer("contactPasses", &S::contactPasses, "Passes of cloth self and cloth-cloth contact per step.", 0,
+                 100)
+        .vector("domainMin", &S::domainMin, "m", "Water below this corner is removed (drained).")
+        .vector("domainMax", &S::domainMax, "m", "Water above this corner is removed (drained).");
+    ParamBinding<ResourceLimits> limits(decl);
+    limits
+        .integer("maxParticles", &ResourceLimits::maxParticles,
+                 "Limit: most particles the run may hold, counting all its nozzles would emit up to its end "
+                 "(0: as many as the device's memory holds at about 512 bytes each).",
+                 0, 2000000000)
+        .integer("maxStepsPerFrame", &ResourceLimits::maxStepsPerFrame,
+                 "Limit: most time steps between two output frames.", 1, 2000000000)
+        .integer("maxCellParticles", &ResourceLimits::maxCellParticles,
+                 "Limit: most particles a neighbour-grid cell (edge: the largest support radius) may hold at "
+                 "rest spacing: (h / spacing)^3 for water, (h / edge length)^2 for a cloth sheet.",
+                 1, 2000000000);
+    r.add(decl.makeUnique().create([settings, limits](const ElementParams& p) {
+      return std::make_unique<SimulationModule>(p, settings, limits);
+    }));
+  }
+  {
+    ElementDecl decl("Water", "Properties of water particles (Table 1).", "Water");
+    ParamBinding<WaterSettings> water(decl);
+    using W = WaterSettings;
+    water.real("spacing", &W::spacing, "m", "Initial particle spacing r0.", 0.0, 10.0, true)
+        .real("supportRadius", &W::supportRadius, "m", "SPH support radius h.", 0.0, 10.0, true)
+        .real("restDensity", &W::restDensity, "kg/m^3", "Rest density rho0 of water.", 0.0, 1e6, true)
+        .real("particleMass", &W::particleMass, "kg", "Mass of a full water particle.", 0.0, 1e6, true)
+        .integer("iterations", &W::iterations, "Density constraint iterations per step.", 1, 1000)
+        .real("relaxation", &W::relaxation, "",
+              "Constraint relaxation epsilon, relative to the denominator of a particle at rest.", 0.0, 1e6)
+        .real("artificialPressure", &W::artificialPressure, "",
+              "k of the s_corr term, as a fraction of a full density error's correction.", 0.0, 1.0)
+        .real("artificialPressureRadius", &W::artificialPressureRadius, "", "delta q of s_corr, relative to h.", 0.0,
+              1.0, true)
+        .real("viscosity", &W::viscosity, "", "XSPH viscosity c.", 0.0, 1.0)
+        .real("vorticity", &W::vorticity, "m/s", "Vorticity confinement epsilon (0: off).", 0.0, 1e3)
+        .real("neighbourSkin", &W::neighbourSkin, "",
+              "The density iterations visit the pairs within (1 + skin) h found at the start of the step "
+              "(a large value, e.g. 100, visits every grid candidate, as a query per iteration would).",
+              0.0, 1e3);
+    r.add(decl.makeUnique().create([water](const ElementParams& p) { return std::make_unique<WaterModule>(p, water); }));
+  }
   r.add(ElementDecl("WaterBlock", "A box filled with water particles on a lattice of the water spacing.", "Water")
             .vector("min", "m", "0 0 0", "Lower corner.")
             .vector("max", "m", "0.2 0.2 0.2", "Upper corner.")

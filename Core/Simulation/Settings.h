@@ -34,6 +34,8 @@ struct SimulationSettings {
   int clothIterations = 8;     // n_s of the cloth constraints (Eq. 5), per cloth sub-step
   int clothSubsteps = 1;       // cloth sub-steps per step (Doc/model.md, "Cloth sub-steps")
   float clothSpectralRadius = 0.6f;   // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
+  int couplingPasses = 2;      // passes of the water-triangle constraint per step (n_s of Eq. 5 for it)
+  int contactPasses = 2;       // passes of cloth contact (self and cloth-cloth) per step
   Vec3 domainMin{-1e3f, -1e3f, -1e3f};  // water leaving this box is drained
   Vec3 domainMax{1e3f, 1e3f, 1e3f};
   float surfaceCellSize = 0.f;  // m; > 0: write a water surface mesh per frame (<WaterSurface>)

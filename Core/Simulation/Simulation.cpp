@@ -75,7 +75,7 @@ void Simulation::addCoreStages() {
                      const SimulationSettings& set = s.settings;
                      s.clothStep_.run(s.particles.view(), s.cloth, s.deviceColliders(), int(s.colliders.size()),
                                       {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothIterations,
-                                       set.clothSpectralRadius, s.contactPasses, kCollisionRadiusScale,
+                                       set.clothSpectralRadius, set.contactPasses, kCollisionRadiusScale,
                                        s.sizeListsNow()});
                    }});
   pipeline.append({stage::kCollide, [](Simulation& s) {
@@ -87,7 +87,7 @@ void Simulation::addCoreStages() {
                      if (s.cloth.empty()) return;
                      s.couplingMoved_.resize(std::size_t(s.particles.count()));
                      projectWaterOutOfCloth(s.device(), s.particles.view(), s.cloth.grid(), s.cloth.view(),
-                                            s.vertexFields.find(field::kCouplingStiffness), s.couplingPasses, s.couplingMoved_.data(),
+                                            s.vertexFields.find(field::kCouplingStiffness), s.settings.couplingPasses, s.couplingMoved_.data(),
                                             s.couplingMinLanes);
                    }});
   pipeline.append({stage::kFinalize, [](Simulation& s) {

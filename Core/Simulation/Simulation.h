@@ -100,14 +100,10 @@ class Simulation final : public CheckpointState, public FrameSource {
   // Per-cloth-vertex fields shared by name (Cloth/VertexFields.h): the
   // coupling stage reads field::kCouplingStiffness, WetCloth writes it.
   VertexFields vertexFields;
-  // Passes of the water-triangle constraint per step (n_s of Eq. 5 for it).
-  int couplingPasses = 2;
   // Fewest GPU lanes per water particle in the coupling passes (Base/Lanes.h;
   // more are used where fewer than a million threads would run). A tuning
   // knob for soak-bench's --coupling-lanes; Doc/performance.md has the sweep.
   int couplingMinLanes = 1;
-  // Passes of cloth contact (self and cloth-cloth) per step.
-  int contactPasses = 2;
 
   // Check for an instability after every stage (slow; names the stage).
   // Throws InstabilityError.
