@@ -4,11 +4,32 @@
 
 #include "Base/Error.h"
 #include "Registry/ModuleRegistry.h"
+#include "Registry/ParamBinding.h"
 #include "Simulation/Simulation.h"
 
 namespace soak {
 
 namespace {
+
+// What <Cloth> says besides its name, mesh and pins, as the scene writes it
+// (ClothModule turns it into a ClothSpec). The defaults are the scene's.
+struct ClothParams {
+  Vec3 translate{0.f, 0.f, 0.f};
+  float scale = 1.f;
+  Vec3 origin{-0.6f, 1.f, -0.6f};
+  Vec3 axisU{1.f, 0.f, 0.f}, axisV{0.f, 0.f, 1.f};
+  float width = 1.2f, height = 1.2f;
+  int cellsU = 119, cellsV = 119;
+  float particleMass = 0.0066f;  // Table 1
+  float supportRadius = 0.04f;   // not given: the water's h
+  float thickness = 0.f;         // 0: 0.75 x mean edge length
+  bool tethers = true;
+  float tetherSlack = 0.f;
+  ClothModel model = ClothModel::Pbd;
+  bool stretchLimits = true;
+  float stretchStiffness = 1.f, bendStiffness = 0.1f;
+  float stretchCompliance = 0.f, bendCompliance = 1.f;
+};
 
 // Vertex index of a named corner of a generated (cellsU + 1) x (cellsV + 1) sheet.
 int sheetCorner(const std::string& name, int cellsU, int cellsV, const std::string& where) {
@@ -22,54 +43,50 @@ int sheetCorner(const std::string& name, int cellsU, int cellsV, const std::stri
 
 class ClothModule : public Module {
  public:
-  explicit ClothModule(const ElementParams& p) : p_(p) {}
+  ClothModule(const ElementParams& p, const ClothParams& c) : p_(p), c_(c) {}
   void setup(Simulation& sim) override {
     const std::string& where = p_.where();
+    const ClothParams& c = c_;
     ClothSpec spec;
     spec.name = p_.text("name");
     spec.where = where;
     for (const auto& o : sim.cloth.objects())
       if (o.name == spec.name) throw InputError("<Cloth>: a cloth named '" + spec.name + "' already exists", where);
     const std::string meshFile = p_.text("mesh");
-    const int cellsU = int(p_.integer("cellsU")), cellsV = int(p_.integer("cellsV"));
+    const int cellsU = c.cellsU, cellsV = c.cellsV;
     if (meshFile.empty()) {
       sim.checkParticleBudget(double(cellsU + 1) * double(cellsV + 1), "<Cloth>", where);
-      Vec3 u = p_.vector("axisU"), v = p_.vector("axisV");
+      const Vec3 u = c.axisU, v = c.axisV;
       if (length(u) < 1e-9f || length(v) < 1e-9f || length(cross(u, v)) < 1e-6f * length(u) * length(v))
         throw InputError("<Cloth>: axisU and axisV must be non-zero and not parallel", where);
-      spec.mesh = makeRectangularSheet(p_.vector("origin"), u / length(u), v / length(v), p_.realf("width"),
-                                       p_.realf("height"), cellsU, cellsV);
+      spec.mesh = makeRectangularSheet(c.origin, u / length(u), v / length(v), c.width, c.height, cellsU, cellsV);
       spec.sheetColumns = cellsU + 1;
       spec.sheetRows = cellsV + 1;
     } else {
       spec.mesh = loadObjMesh(p_.resolvePath(meshFile));
       sim.checkParticleBudget(double(spec.mesh.vertices.size()), "<Cloth> mesh " + meshFile, where);
       spec.mesh.triangleLines.clear();  // checked against the file already; later messages name the scene
-      const float scale = p_.realf("scale");
-      const Vec3 t = p_.vector("translate");
-      for (Vec3& x : spec.mesh.vertices) x = x * scale + t;
+      for (Vec3& x : spec.mesh.vertices) x = x * c.scale + c.translate;
     }
     validateClothMesh(spec.mesh, where);
-    spec.particleMass = p_.realf("particleMass");
-    spec.supportRadius = p_.given("supportRadius") ? p_.realf("supportRadius") : sim.water.supportRadius;
-    spec.thickness = p_.realf("thickness");
-    spec.tetherSlack = p_.boolean("tethers") ? p_.realf("tetherSlack") : -1.f;
+    spec.particleMass = c.particleMass;
+    spec.supportRadius = p_.given("supportRadius") ? c.supportRadius : sim.water.supportRadius;
+    spec.thickness = c.thickness;
+    spec.tetherSlack = c.tethers ? c.tetherSlack : -1.f;
     // Eq. 5 over all the rounds of a step, so that sub-steps keep the stiffness per step.
     const int iterations = sim.settings.clothIterations * sim.settings.clothSubsteps;
-    const std::string model = p_.text("model");
-    if (model == "chebyshev") {
-      spec.model = ClothModel::Chebyshev;
-      spec.stretchStiffness = stiffnessFromCompliance(p_.realf("stretchCompliance"));
+    spec.model = c.model;
+    if (c.model == ClothModel::Chebyshev) {
+      spec.stretchStiffness = stiffnessFromCompliance(c.stretchCompliance);
       // Bending: one projection pass per sub-step (Cloth/ClothJacobi.h).
-      spec.bend.kPrime = perIterationStiffness(p_.realf("bendStiffness"), sim.settings.clothSubsteps);
-      spec.stretchLimits = p_.boolean("stretchLimits");
-    } else if (model == "xpbd") {
-      spec.model = ClothModel::Xpbd;
-      spec.stretch.compliance = p_.realf("stretchCompliance");
-      spec.bend.compliance = p_.realf("bendCompliance");
+      spec.bend.kPrime = perIterationStiffness(c.bendStiffness, sim.settings.clothSubsteps);
+      spec.stretchLimits = c.stretchLimits;
+    } else if (c.model == ClothModel::Xpbd) {
+      spec.stretch.compliance = c.stretchCompliance;
+      spec.bend.compliance = c.bendCompliance;
     } else {
-      spec.stretch.kPrime = perIterationStiffness(p_.realf("stretchStiffness"), iterations);
-      spec.bend.kPrime = perIterationStiffness(p_.realf("bendStiffness"), iterations);
+      spec.stretch.kPrime = perIterationStiffness(c.stretchStiffness, iterations);
+      spec.bend.kPrime = perIterationStiffness(c.bendStiffness, iterations);
     }
     const int nv = int(spec.mesh.vertices.size());
     for (long long v : p_.integerList("pin")) {
@@ -103,57 +120,65 @@ class ClothModule : public Module {
 
  private:
   ElementParams p_;
+  ClothParams c_;
 };
 
 }  // namespace
 
 void registerClothElement(ModuleRegistry& r) {
-  r.add(ElementDecl("Cloth",
-                    "A piece of cloth: a triangle mesh from an OBJ file, or a generated rectangular sheet of "
-                    "(cellsU + 1) x (cellsV + 1) vertices. Each vertex is a cloth particle (Section 3.2).",
-                    "Cloth")
-            .fileSafeName("name", "cloth", "Name (output file cloth_<name>.pvd); unique per scene.")
-            .inputFile("mesh", "", "OBJ file (relative to the scene); empty: a generated sheet.")
-            .vector("translate", "m", "0 0 0", "Mesh only: translation applied after scaling.")
-            .real("scale", "", "1", "Mesh only: uniform scale.", 0.0, 1e6, true)
-            .vector("origin", "m", "-0.6 1 -0.6", "Sheet only: corner u0v0.")
-            .vector("axisU", "", "1 0 0", "Sheet only: direction of the first side.")
-            .vector("axisV", "", "0 0 1", "Sheet only: direction of the second side.")
-            .real("width", "m", "1.2", "Sheet only: length along axisU.", 0.0, 1e4, true)
-            .real("height", "m", "1.2", "Sheet only: length along axisV.", 0.0, 1e4, true)
-            .integer("cellsU", "119", "Sheet only: cells along axisU (vertices = cells + 1).", 1, 100000)
-            .integer("cellsV", "119", "Sheet only: cells along axisV.", 1, 100000)
-            .real("particleMass", "kg", "0.0066", "Mass of a cloth particle (Table 1).", 0.0, 1e6, true)
-            .real("supportRadius", "m", "0.04",
-                  "Support radius of cloth particles as water boundary (default: the water's h).", 0.0, 10.0, true)
-            .real("thickness", "m", "0",
-                  "Contact distance between cloth layers; d of Eq. 21 is half of it. 0: 0.75 x mean edge length.",
-                  0.0, 10.0)
-            .boolean("tethers", "true",
-                     "Long-range attachments: no vertex moves further from its nearest pins than its rest "
-                     "distance x (1 + tetherSlack); keeps hanging cloth from over-stretching at few iterations.")
-            .real("tetherSlack", "", "0", "Relative slack of the tethers (a sheet pinned at four corners sags only by this much).", 0.0, 10.0)
-            .choice("model", {"pbd", "xpbd", "chebyshev"}, "pbd",
-                    "The cloth solver. pbd: the paper's Gauss-Seidel PBD over constraint colours, stiffness in "
-                    "[0, 1] with the per-iteration factor of Eq. 5; xpbd: the same with compliance; chebyshev: "
-                    "Jacobi iterations on the implicit-Euler energy with Chebyshev acceleration (one dependent "
-                    "phase per iteration; Doc/model.md, \"Cloth solvers\"): stretch from stretchCompliance, "
-                    "bending from bendStiffness, applied once per sub-step.")
-            .boolean("stretchLimits", "true",
-                     "chebyshev, generated sheets: keep each vertex within its rest distance of the vertices 2, 4, "
-                     "8, ... apart along its row and column. They never resist folding (on a sheet cut flat no "
-                     "fold lengthens them) and carry the resistance to stretch across the sheet in few "
-                     "iterations.")
-            .real("stretchStiffness", "", "1", "PBD stiffness of the stretch constraint (Eq. 8).", 0.0, 1.0)
-            .real("bendStiffness", "", "0.1", "pbd, chebyshev: stiffness of the bending constraint (Eq. 9).", 0.0, 1.0)
-            .real("stretchCompliance", "m/N", "0",
-                  "xpbd, chebyshev: compliance of the stretch constraint (0: inextensible).", 0.0, 1e6)
-            .real("bendCompliance", "1/(N m)", "1", "xpbd: compliance of the bending constraint.", 0.0,
-                  1e6)
-            .integerList("pin", "", "Vertex indices held in place (inverse mass 0).")
-            .text("pinCorners", "", "Sheet only: corners held in place, from u0v0 u1v0 u0v1 u1v1.")
-            .text("attachTo", "", "Name of a collider the pinned vertices move with.")
-            .create([](const ElementParams& p) { return std::make_unique<ClothModule>(p); }));
+  ElementDecl decl("Cloth",
+                   "A piece of cloth: a triangle mesh from an OBJ file, or a generated rectangular sheet of "
+                   "(cellsU + 1) x (cellsV + 1) vertices. Each vertex is a cloth particle (Section 3.2).",
+                   "Cloth");
+  decl.fileSafeName("name", "cloth", "Name (output file cloth_<name>.pvd); unique per scene.")
+      .inputFile("mesh", "", "OBJ file (relative to the scene); empty: a generated sheet.");
+  // Each parameter bound to its ClothParams member (Registry/ParamBinding.h).
+  ParamBinding<ClothParams> cloth(decl);
+  using C = ClothParams;
+  cloth.vector("translate", &C::translate, "m", "Mesh only: translation applied after scaling.")
+      .real("scale", &C::scale, "", "Mesh only: uniform scale.", 0.0, 1e6, true)
+      .vector("origin", &C::origin, "m", "Sheet only: corner u0v0.")
+      .vector("axisU", &C::axisU, "", "Sheet only: direction of the first side.")
+      .vector("axisV", &C::axisV, "", "Sheet only: direction of the second side.")
+      .real("width", &C::width, "m", "Sheet only: length along axisU.", 0.0, 1e4, true)
+      .real("height", &C::height, "m", "Sheet only: length along axisV.", 0.0, 1e4, true)
+      .integer("cellsU", &C::cellsU, "Sheet only: cells along axisU (vertices = cells + 1).", 1, 100000)
+      .integer("cellsV", &C::cellsV, "Sheet only: cells along axisV.", 1, 100000)
+      .real("particleMass", &C::particleMass, "kg", "Mass of a cloth particle (Table 1).", 0.0, 1e6, true)
+      .real("supportRadius", &C::supportRadius, "m",
+            "Support radius of cloth particles as water boundary (default: the water's h).", 0.0, 10.0, true)
+      .real("thickness", &C::thickness, "m",
+            "Contact distance between cloth layers; d of Eq. 21 is half of it. 0: 0.75 x mean edge length.", 0.0,
+            10.0)
+      .boolean("tethers", &C::tethers,
+               "Long-range attachments: no vertex moves further from its nearest pins than its rest "
+               "distance x (1 + tetherSlack); keeps hanging cloth from over-stretching at few iterations.")
+      .real("tetherSlack", &C::tetherSlack, "",
+            "Relative slack of the tethers (a sheet pinned at four corners sags only by this much).", 0.0, 10.0)
+      .choice<ClothModel>("model", &C::model,
+                          {{"pbd", ClothModel::Pbd}, {"xpbd", ClothModel::Xpbd}, {"chebyshev", ClothModel::Chebyshev}},
+                          "The cloth solver. pbd: the paper's Gauss-Seidel PBD over constraint colours, stiffness in "
+                          "[0, 1] with the per-iteration factor of Eq. 5; xpbd: the same with compliance; chebyshev: "
+                          "Jacobi iterations on the implicit-Euler energy with Chebyshev acceleration (one dependent "
+                          "phase per iteration; Doc/model.md, \"Cloth solvers\"): stretch from stretchCompliance, "
+                          "bending from bendStiffness, applied once per sub-step.")
+      .boolean("stretchLimits", &C::stretchLimits,
+               "chebyshev, generated sheets: keep each vertex within its rest distance of the vertices 2, 4, "
+               "8, ... apart along its row and column. They never resist folding (on a sheet cut flat no "
+               "fold lengthens them) and carry the resistance to stretch across the sheet in few "
+               "iterations.")
+      .real("stretchStiffness", &C::stretchStiffness, "", "PBD stiffness of the stretch constraint (Eq. 8).", 0.0,
+            1.0)
+      .real("bendStiffness", &C::bendStiffness, "", "pbd, chebyshev: stiffness of the bending constraint (Eq. 9).",
+            0.0, 1.0)
+      .real("stretchCompliance", &C::stretchCompliance, "m/N",
+            "xpbd, chebyshev: compliance of the stretch constraint (0: inextensible).", 0.0, 1e6)
+      .real("bendCompliance", &C::bendCompliance, "1/(N m)", "xpbd: compliance of the bending constraint.", 0.0,
+            1e6);
+  decl.integerList("pin", "", "Vertex indices held in place (inverse mass 0).")
+      .text("pinCorners", "", "Sheet only: corners held in place, from u0v0 u1v0 u0v1 u1v1.")
+      .text("attachTo", "", "Name of a collider the pinned vertices move with.");
+  r.add(decl.create([cloth](const ElementParams& p) { return std::make_unique<ClothModule>(p, cloth.read(p)); }));
 }
 
 }  // namespace soak
