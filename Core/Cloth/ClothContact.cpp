@@ -81,15 +81,20 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
       if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) return Vec3(0.f, 0.f, 0.f);
       return triangleCouplingCorrection(x0, x, c.triangleSnapshot[k], dist, 0.f);
     };
-    // With several lanes, they first look for any triangle that would
-    // correct the vertex where it is; if none would, neither would the
-    // sequential pass below (its corrections are taken at the vertex's
-    // current position, which then never changes). Corrections are rare:
-    // most vertices stop here. One lane (the CPU) goes straight on.
+    // A triangle that shares a vertex with one of the vertex's own
+    // triangles is its own surface, not another layer.
+    const auto ownSurface = [&](int k, int j) {
+      return p.phase[j] == p.phase[i] && touchesOneRing(c, vi, c.firstVertexTriangles[k]);
+    };
+    // With several lanes, they first look for any triangle of another layer
+    // that would correct the vertex where it is; if none would, neither
+    // would the sequential pass below (its corrections are taken at the
+    // vertex's current position, which then never changes). Corrections
+    // are rare: most vertices stop here. One lane (the CPU) goes straight on.
     if (lanes.size > 1) {
       bool due = false;
-      forEachCandidateTriangleNearPath(n, p, v, i, x0, start, lanes, [&](int k, int) {
-        if (!due) due = !isZero(correction(k, start));
+      forEachCandidateTriangleNearPath(n, p, v, i, x0, start, lanes, [&](int k, int j) {
+        if (!due) due = !isZero(correction(k, start)) && !ownSurface(k, j);
       });
       const bool any = laneAny(lanes, due);
       if (!lanes.leader()) return;
@@ -101,12 +106,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
     Vec3 x = start;
     forEachCandidateTriangleNearPath(n, p, v, i, x0, start, Lanes{}, [&](int k, int j) {
       const Vec3 corr = correction(k, x);
-      if (isZero(corr)) return;
-      const ClothTriangle t = c.firstVertexTriangles[k];
-      // A triangle that shares a vertex with one of the vertex's own
-      // triangles is its own surface, not another layer (checked only
-      // here, where a correction is due).
-      if (p.phase[j] == p.phase[i] && touchesOneRing(c, vi, t)) return;
+      if (isZero(corr) || ownSurface(k, j)) return;  // the one-ring test only where a correction is due
       x += corr;
     });
     delta[i] = x - start;
