@@ -18,18 +18,13 @@ struct ContactCandidates {
   }
 };
 
-struct VertexOfItem {
-  const int* id;
-  const int* slot;
-  SOAK_INLINE int operator()(int v) const { return id[slot[v]]; }
-};
 }  // namespace
 
 void ClothContactLists::build(ParticleView p, GridView g, ClothView c, float dt, bool sizeExactly) {
   const ClothSlots cloth = clothSlots(c);
   const ClothContactStep step{p.position, p.velocity, p.phase, p.id, dt};
   buildKeyedPairLists(device_, lists_, cloth.count, sizeExactly, ContactCandidates{g, cloth.slot, step, c},
-                      VertexOfItem{p.id, cloth.slot}, cloth.count, kListLanes, "cloth.contact.lists.count",
+                      ClothVertexOfItem{p.id, cloth.slot}, cloth.count, kListLanes, "cloth.contact.lists.count",
                       "cloth.contact.lists.fill");
   view_ = {lists_.view(), g, cloth.slot, step, c};
 }

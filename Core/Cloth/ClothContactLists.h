@@ -93,12 +93,7 @@ SOAK_INLINE void forEachCandidateTriangleNearPath(const ClothContactView& n, con
   const Vec3 path = x - x0;
   const float len2 = lengthSquared(path);
   forEachContactCandidate(n, v, i, lanes, [&](int j) {
-    const Vec3 y = p.predicted[j].xyz();
-    const float t = len2 > 0.f ? minf(maxf(dot(y - x0, path) / len2, 0.f), 1.f) : 0.f;
-    if (lengthSquared(y - (x0 + path * t)) > reach * reach) return;
-    const int vj = p.id[j];
-    const int end = c.firstVertexTriangleStart[vj + 1];
-    for (int k = c.firstVertexTriangleStart[vj]; k < end; ++k) f(k, j);
+    if (withinReachOfPath(p.predicted[j].xyz(), x0, path, len2, reach)) forEachTriangleFirstAt(c, p, j, f);
   });
 }
 

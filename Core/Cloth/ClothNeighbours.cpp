@@ -30,12 +30,6 @@ struct ClothCandidates {
   }
 };
 
-// An item's key: its particle's vertex, which no reordering changes.
-struct VertexOfItem {
-  const int* id;
-  const int* slot;
-  SOAK_INLINE int operator()(int v) const { return id[slot[v]]; }
-};
 }  // namespace
 
 void ClothNeighbours::build(ParticleView p, GridView g, ClothSlots cloth, const float* thickness, bool sizeExactly,
@@ -43,7 +37,7 @@ void ClothNeighbours::build(ParticleView p, GridView g, ClothSlots cloth, const 
   // Keyed by vertex: between maintenance steps one pass fills each list
   // into its vertex's room (PairLists.h).
   buildKeyedPairLists(device_, lists_, cloth.count, sizeExactly, ClothCandidates{p, g, cloth.slot, thickness},
-                      VertexOfItem{p.id, cloth.slot}, cloth.count, lanes ? kListLanes : 0, "cloth.neighbours.count",
+                      ClothVertexOfItem{p.id, cloth.slot}, cloth.count, lanes ? kListLanes : 0, "cloth.neighbours.count",
                       "cloth.neighbours.fill");
   view_ = {lists_.view(), g, cloth.slot};
 }

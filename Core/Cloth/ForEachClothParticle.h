@@ -24,6 +24,14 @@ struct ClothSlots {
 
 inline ClothSlots clothSlots(const ClothView& c) { return {c.clothSlots, c.vertexCount}; }
 
+// A cloth item's key for keyed pair lists (Neighbours/PairLists.h): its
+// particle's vertex, which no reordering changes.
+struct ClothVertexOfItem {
+  const int* id;
+  const int* slot;
+  SOAK_INLINE int operator()(int v) const { return id[slot[v]]; }
+};
+
 template <class F>
 void forEachClothParticle(Device d, ClothSlots cloth, F f, const char* what = "forEachClothParticle") {
   const int* slot = cloth.slot;

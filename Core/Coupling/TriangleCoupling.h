@@ -96,6 +96,22 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, Vec3 a0, Vec3 b0, V
 // within 1.5 edges + d of a point of the path.
 SOAK_INLINE float triangleReach(float maxEdgeLength, float d) { return 1.5f * maxEdgeLength + d; }
 
+// Whether y lies within `reach` of the path from x0 along `path` (its
+// squared length `len2`): the point-segment distance.
+SOAK_INLINE bool withinReachOfPath(Vec3 y, Vec3 x0, Vec3 path, float len2, float reach) {
+  const float t = len2 > 0.f ? minf(maxf(dot(y - x0, path) / len2, 0.f), 1.f) : 0.f;
+  return lengthSquared(y - (x0 + path * t)) <= reach * reach;
+}
+
+// Calls f(k, j) for the triangles whose first vertex is cloth slot j:
+// k is the triangle's place in c.firstVertexTriangles (and c.triangleSnapshot).
+template <class F>
+SOAK_INLINE void forEachTriangleFirstAt(const ClothView& c, const ParticleView& p, int j, F&& f) {
+  const int v = p.id[j];
+  const int end = c.firstVertexTriangleStart[v + 1];
+  for (int k = c.firstVertexTriangleStart[v]; k < end; ++k) f(k, j);
+}
+
 // Calls f(j) for every cloth slot j within `reach` of the path x0 -> x
 // (the candidates whose triangles can matter). The cells searched extend a
 // quarter cell further: a slot is listed under the cell it was in when the
@@ -111,11 +127,7 @@ SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, 
   const float len2 = lengthSquared(path);
   forEachCandidateInBox(g, lo, hi, lanes, [&](int j) {
     if (!isCloth(p.phase[j])) return;
-    // Within reach of the path (point-segment distance).
-    const Vec3 y = p.predicted[j].xyz();
-    const float t = len2 > 0.f ? minf(maxf(dot(y - x0, path) / len2, 0.f), 1.f) : 0.f;
-    if (lengthSquared(y - (x0 + path * t)) > reach * reach) return;
-    f(j);
+    if (withinReachOfPath(p.predicted[j].xyz(), x0, path, len2, reach)) f(j);
   });
 }
 
@@ -127,11 +139,7 @@ template <class F>
 SOAK_INLINE void forEachTriangleNearPath(const GridView& g, const ParticleView& p, const ClothView& c, Vec3 x0, Vec3 x,
                                          const Lanes& lanes, F&& f) {
   const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
-  forEachClothNearPath(g, p, x0, x, reach, lanes, [&](int j) {
-    const int v = p.id[j];
-    const int end = c.firstVertexTriangleStart[v + 1];
-    for (int k = c.firstVertexTriangleStart[v]; k < end; ++k) f(k, j);
-  });
+  forEachClothNearPath(g, p, x0, x, reach, lanes, [&](int j) { forEachTriangleFirstAt(c, p, j, f); });
 }
 
 // Refreshes c.triangleSnapshot from the particles' start-of-step and

@@ -34,8 +34,6 @@ class WetClothModule : public Module {
     st_ = std::make_unique<WetState>(sim.device());
     st_->w = w_;
     st_->drying = drying_;
-    st_->initialSaturation = w_.initialSaturation;
-    st_->where = where_;
     ParticleState& ps = sim.particles;
     st_->held = ps.addChannel(kHeldWaterChannel);
     st_->buffer = ps.addChannel(kBufferChannel);

@@ -37,7 +37,7 @@ void WetState::setInitialSaturation(Simulation& sim) {
   const std::vector<int> phase = sim.particles.downloadPhases();
   std::vector<float> h(vol.size(), 0.f);
   for (std::size_t i = 0; i < h.size(); ++i)
-    if (isCloth(phase[i])) h[i] = initialSaturation * vol[i] / w.c;
+    if (isCloth(phase[i])) h[i] = w.initialSaturation * vol[i] / w.c;
   Buffer<float> tmp(sim.device());
   tmp.upload(h);
   copyDeviceToDevice(sim.device(), a.held, tmp.data(), h.size() * sizeof(float));

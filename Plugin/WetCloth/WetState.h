@@ -5,7 +5,6 @@
 // under its own names (absorbScratch(), ...). WetClothModule owns it and
 // sets it up; the stages (Stages/) run on it.
 #include <memory>
-#include <string>
 
 #include "Backend/Buffer.h"
 #include "Cloth/ClothNeighbours.h"
@@ -24,9 +23,7 @@ struct WetState {
   WetParams w;
   DryingParams drying;
   WaterReference ref;
-  std::string where;              // the <WetCloth> element's file:line
-  float initialSaturation = 0.f;  // given once, at the first wet.volume
-  bool initialised = false;
+  bool initialised = false;  // w.initialSaturation given (at the first wet.volume)
 
   // Particle channels (indices) and per-vertex arrays.
   int held = -1, buffer = -1, saturation = -1, volume = -1;
@@ -58,7 +55,7 @@ struct WetState {
   FickScratch fickScratch() { return {pool_[0].data(), pool_[1].data(), pool_[2].data()}; }
   TransferScratch transferScratch() { return {pool_[0].data(), pool_[1].data()}; }
   Vec3* stickDelta() { return delta_.data(); }
-  // Every cloth particle starts holding initialSaturation V / c of water.
+  // Every cloth particle starts holding w.initialSaturation V / c of water.
   void setInitialSaturation(Simulation& sim);
 
  private:

@@ -31,7 +31,7 @@ plugin=$work/template/soak-plugins/libsoak_SteadyWind.so
 grep -q "wind.relax" profile.txt || { echo "the plugin's stage did not run"; cat profile.txt; exit 1; }
 [ -f wind/water.pvd ] || { echo "no output"; exit 1; }
 "$prefix/bin/soak" run "$prefix/share/soak/Scenes/fig7_small.xml" -o fig7 --frames 2 --device cpu --quiet
-[ -f fig7/cloth_sheet.pvd ] || [ -n "$(ls fig7/*.pvd 2>/dev/null)" ] || { echo "fig7: no output"; exit 1; }
+[ -f fig7/cloth_sheet.pvd ] || { echo "fig7: no output"; exit 1; }
 # The same plugin, as if built against another Soak.
 configure "$work/template-other" "-DCMAKE_CXX_FLAGS=-DSOAK_PLUGIN_BUILT_FOR=\\\"0.0.0-other\\\""
 set +e

@@ -8,27 +8,13 @@
 #include <cstdio>
 
 #include "Support/TestScenes.h"
+#include "WetScenes.h"
 
 using namespace soak;
 
-namespace {
-
-std::unique_ptr<Simulation> wetScene(const std::string& body, test::TestRegistry& reg,
-                                     const std::vector<std::string>& overrides = {}) {
-  return test::makeSimulation("<Scene>\n" + body + "\n</Scene>", Device::Cpu, reg, overrides);
-}
-
-std::vector<float> channel(Simulation& sim, const std::string& name) {
-  const int c = sim.particles.findChannel(name);
-  EXPECT_GE(c, 0) << name;
-  return c >= 0 ? sim.particles.downloadChannel(c) : std::vector<float>();
-}
-
-// A still sheet: gravity 1e-6 m/s^2 gives the gravity terms their
-// direction without moving anything.
-const char* kStill = "<Simulation gravity='0 -0.000001 0'/>";
-
-}  // namespace
+using test::channel;
+using test::kStill;
+using test::wetScene;
 
 TEST(WetCloth, WetClothLetsWaterThroughAndDryClothDoesNot) {
   // Eq. 22: a block dropped on a pinned horizontal sheet. Dry (kappa = 1)

@@ -9,21 +9,14 @@
 #include <numeric>
 
 #include "Support/TestScenes.h"
+#include "WetScenes.h"
 
 using namespace soak;
+using test::channel;
+using test::kStill;
+using test::wetScene;
 
 namespace {
-
-std::unique_ptr<Simulation> wetScene(const std::string& body, test::TestRegistry& reg,
-                                     const std::vector<std::string>& overrides = {}) {
-  return test::makeSimulation("<Scene>\n" + body + "\n</Scene>", Device::Cpu, reg, overrides);
-}
-
-std::vector<float> channel(Simulation& sim, const std::string& name) {
-  const int c = sim.particles.findChannel(name);
-  EXPECT_GE(c, 0) << name;
-  return c >= 0 ? sim.particles.downloadChannel(c) : std::vector<float>();
-}
 
 // Sets the held water of cloth particles (CPU run) from f(vertex position).
 template <class F>
@@ -44,10 +37,6 @@ double clothSum(Simulation& sim, const std::string& name) {
     if (isCloth(phase[i])) s += v[i];
   return s;
 }
-
-// A still sheet: gravity 1e-6 m/s^2 gives the gravity terms their
-// direction without moving anything.
-const char* kStill = "<Simulation gravity='0 -0.000001 0'/>";
 
 }  // namespace
 

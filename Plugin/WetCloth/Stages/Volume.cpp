@@ -63,7 +63,7 @@ void runVolume(WetState& st, Simulation& s) {
   st.clothNeighbours->build(s.particles.view(), s.cloth.grid(), clothSlots(c), c.thickness, s.sizeListsNow());
   if (!st.initialised) {
     st.initialised = true;
-    if (st.initialSaturation > 0.f) st.setInitialSaturation(s);
+    if (st.w.initialSaturation > 0.f) st.setInitialSaturation(s);
   }
   updatePorosity(s.device(), s.particles.view(), st.arrays(s), st.w);
 }
