@@ -50,6 +50,17 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* de
   }
 }
 
+namespace {
+SOAK_INLINE bool touchesOneRing(const ClothView& c, int v, const ClothTriangle& t) {
+  for (int k = c.vertexTriangleStart[v]; k < c.vertexTriangleStart[v + 1]; ++k) {
+    const ClothTriangle r = c.triangles[c.vertexTriangles[k]];
+    for (int a = 0; a < 3; ++a)
+      if (r.v[a] == t.v[0] || r.v[a] == t.v[1] || r.v[a] == t.v[2]) return true;
+  }
+  return false;
+}
+}  // namespace
+
 void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta) {
   const ClothView c = n.cloth;
   if (c.triangleCount == 0) return;
@@ -64,11 +75,16 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
     const int vi = p.id[i];
     const Vec3 x0 = p.position[i].xyz(), start = xi4.xyz();
     const float dist = 0.5f * c.thickness[vi];
-    // The same side test as water (Eq. 21); the vertex takes the whole
-    // correction. The triangles exclude the vertex's own surface
-    // (ClothContactLists.h).
+    // The same side test as water (Eq. 21); the vertex takes the whole correction.
     const auto correction = [&](int k, Vec3 x) {
+      const ClothTriangle t = c.firstVertexTriangles[k];
+      if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) return Vec3(0.f, 0.f, 0.f);
       return triangleCouplingCorrection(x0, x, c.triangleSnapshot[k], dist, 0.f);
+    };
+    // A triangle that shares a vertex with one of the vertex's own
+    // triangles is its own surface, not another layer.
+    const auto ownSurface = [&](int k, int j) {
+      return p.phase[j] == p.phase[i] && touchesOneRing(c, vi, c.firstVertexTriangles[k]);
     };
     // With several lanes, they first look for any triangle of another layer
     // that would correct the vertex where it is; if none would, neither
@@ -77,8 +93,8 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
     // are rare: most vertices stop here. One lane (the CPU) goes straight on.
     if (lanes.size > 1) {
       bool due = false;
-      forEachOtherLayerTriangleNearPath(n, p, v, i, x0, start, lanes, [&](int k) {
-        if (!due) due = !isZero(correction(k, start));
+      forEachCandidateTriangleNearPath(n, p, v, i, x0, start, lanes, [&](int k, int j) {
+        if (!due) due = !isZero(correction(k, start)) && !ownSurface(k, j);
       });
       const bool any = laneAny(lanes, due);
       if (!lanes.leader()) return;
@@ -88,9 +104,10 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
       }
     }
     Vec3 x = start;
-    forEachOtherLayerTriangleNearPath(n, p, v, i, x0, start, Lanes{}, [&](int k) {
+    forEachCandidateTriangleNearPath(n, p, v, i, x0, start, Lanes{}, [&](int k, int j) {
       const Vec3 corr = correction(k, x);
-      if (!isZero(corr)) x += corr;
+      if (isZero(corr) || ownSurface(k, j)) return;  // the one-ring test only where a correction is due
+      x += corr;
     });
     delta[i] = x - start;
   }, "cloth.vertexTriangle");

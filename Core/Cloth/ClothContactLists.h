@@ -22,15 +22,8 @@
 // crumpling onto the floor (ClothContactListsTest), every pair that ended a
 // step within 1.5 c_ij had started within 0.54 of it.
 //
-// A second list per cloth particle holds the triangles vertex-triangle
-// contact reads: those whose first vertex is a candidate, in the
-// candidates' order, less the particle's own surface (a triangle of its own
-// cloth sharing a vertex with one of its own triangles: on a sheet about a
-// third of the candidates' triangles). The own-surface test is topology, so
-// it is done here once a step instead of in every pass of every sub-step.
-//
 // An item without a list (past the buffer's capacity, PairLists.h) walks
-// the grid and applies the same tests to the same start positions, so it
+// the grid and applies the same test to the same start positions, so it
 // sees the same candidates in the same order: on one lane (the CPU) the
 // contact sums have the same bits whether or not an item got a list, and
 // the lists' sizing need not be kept by checkpoints.
@@ -66,20 +59,8 @@ SOAK_INLINE bool mayTouchThisStep(const ClothContactStep& s, const ClothView& c,
   return lengthSquared(s.position[i].xyz() - s.position[j].xyz()) < reach * reach;
 }
 
-// Whether triangle t shares a vertex with one of vertex vi's own triangles:
-// then it is vi's own surface, not another layer.
-SOAK_INLINE bool touchesOneRing(const ClothView& c, int vi, const ClothTriangle& t) {
-  for (int k = c.vertexTriangleStart[vi]; k < c.vertexTriangleStart[vi + 1]; ++k) {
-    const ClothTriangle r = c.triangles[c.vertexTriangles[k]];
-    for (int a = 0; a < 3; ++a)
-      if (r.v[a] == t.v[0] || r.v[a] == t.v[1] || r.v[a] == t.v[2]) return true;
-  }
-  return false;
-}
-
 struct ClothContactView {
   PairListView lists;      // items: the cloth particles in slot order (ClothSlots)
-  PairListView triangles;  // per item: places in c.firstVertexTriangles, its own surface left out
   GridView grid;           // the cloth's grid: for items without a list
   const int* slot = nullptr;
   ClothContactStep step;
@@ -116,52 +97,20 @@ SOAK_INLINE void forEachCandidateTriangleNearPath(const ClothContactView& n, con
   });
 }
 
-// Calls f(k) for the triangles of other layers that can matter to item v
-// (its particle slot i) moving from x0 to x: those of
-// forEachCandidateTriangleNearPath, less the particle's own surface. With a
-// triangle list, its first vertex's place is the snapshot's (taken from the
-// same predicted positions before the pass).
-template <class F>
-SOAK_INLINE void forEachOtherLayerTriangleNearPath(const ClothContactView& n, const ParticleView& p, int v, int i,
-                                                    Vec3 x0, Vec3 x, const Lanes& lanes, F&& f) {
-  const ClothView& c = n.cloth;
-  if (n.triangles.listed(v)) {
-    const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
-    const Vec3 path = x - x0;
-    const float len2 = lengthSquared(path);
-    const int s = n.triangles.start[v], e = s + n.triangles.count[v];
-    for (int m = s + lanes.index; m < e; m += lanes.size) {
-      const int k = n.triangles.index[m];
-      if (withinReachOfPath(c.triangleSnapshot[k].a(), x0, path, len2, reach)) f(k);
-    }
-    return;
-  }
-  const int vi = p.id[i];
-  forEachCandidateTriangleNearPath(n, p, v, i, x0, x, lanes, [&](int k, int j) {
-    if (p.phase[j] != p.phase[i] || !touchesOneRing(c, vi, c.firstVertexTriangles[k])) f(k);
-  });
-}
-
 class ClothContactLists {
  public:
-  explicit ClothContactLists(Device d) : lists_(d), triangles_(d), device_(d) {}
+  explicit ClothContactLists(Device d) : lists_(d), device_(d) {}
   // From the particles at the step's start (`p`: positions, velocities;
   // valid from the neighbours stage, whose cloth grid `g` it walks).
   // With `sizeExactly` (a maintenance step) the buffer is sized for all lists.
   void build(ParticleView p, GridView g, ClothView c, float dt, bool sizeExactly);
   ClothContactView view() const { return view_; }
   int itemsWithoutList() const { return lists_.itemsWithoutList(); }
-  int itemsWithoutTriangleList() const { return triangles_.itemsWithoutList(); }
-  void setSizing(const PairListSizing& s) {  // tests: no lists at all
-    lists_.setSizing(s);
-    triangles_.setSizing(s);
-  }
+  void setSizing(const PairListSizing& s) { lists_.setSizing(s); }  // tests: no lists at all
   std::vector<std::vector<int>> download() const { return lists_.download(); }
-  std::vector<std::vector<int>> downloadTriangles() const { return triangles_.download(); }
 
  private:
   PairLists lists_;
-  PairLists triangles_;
   ClothContactView view_;
   Device device_;
 };

@@ -1,8 +1,7 @@
 // The cloth contact candidates found once a step (Cloth/ClothContactLists.h):
 // no pair that touches by the end of a step is missing from them, they
 // hold the grid's candidates that pass their test in the grid's order, and
-// contact over them (particle and vertex-triangle) has the same bits as
-// contact walking the grid.
+// contact over them has the same bits as contact walking the grid.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -138,67 +137,5 @@ TEST(ClothContactLists, ListsAreTheGridsCandidatesThatMayTouchAndContactGivesThe
     EXPECT_TRUE(same(viaLists[i].xyz(), viaGrid[i].xyz())) << "slot " << i;
     moved += same(viaLists[i].xyz(), before[i].xyz()) ? 0 : 1;
   }
-  EXPECT_GT(moved, 10);  // contact did act
-}
-
-TEST(ClothContactLists, TriangleListsLeaveOutTheOwnSurfaceAndVertexTriangleContactGivesTheSameBitsWithout) {
-  test::TestRegistry reg;
-  auto sim = test::makeSimulation(kCrumplingSheet, Device::Cpu, reg);
-  for (int s = 0; s < 60; ++s) sim->step();
-  // A step's start with every vertex moved down by 0-1.6 cm, so that
-  // vertices of the folds cross the layers below them.
-  ParticleView p = sim->particles.view();
-  for (int i = 0; i < p.count; ++i)
-    p.predicted[i] = Float4(p.position[i].xyz() + Vec3(0.f, -0.004f, 0.f) * float((i * 7919) % 5), p.position[i].w);
-  const ClothView c = sim->cloth.view();
-  const ClothSlots cloth = clothSlots(c);
-  const float dt = 0.015f;
-  ClothContactLists lists(Device::Cpu);
-  lists.build(p, sim->cloth.grid(), c, dt, true);
-  ASSERT_EQ(lists.itemsWithoutTriangleList(), 0);
-  // Each list: the triangles first at the item's candidates, in their
-  // order, less those sharing a vertex with the item's own triangles.
-  const std::vector<std::vector<int>> candidates = lists.download(), triangles = lists.downloadTriangles();
-  long kept = 0, all = 0;
-  for (int v = 0; v < cloth.count; ++v) {
-    const int vi = p.id[cloth.slot[v]];
-    std::vector<int> expected;
-    for (int j : candidates[v]) {
-      const int vj = p.id[j];
-      for (int k = c.firstVertexTriangleStart[vj]; k < c.firstVertexTriangleStart[vj + 1]; ++k) {
-        ++all;
-        const ClothTriangle t = c.firstVertexTriangles[k];
-        bool ownSurface = false;
-        for (int r = c.vertexTriangleStart[vi]; r < c.vertexTriangleStart[vi + 1]; ++r)
-          for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) ownSurface = ownSurface || c.triangles[c.vertexTriangles[r]].v[a] == t.v[b];
-        if (!ownSurface) expected.push_back(k);
-      }
-    }
-    EXPECT_EQ(triangles[v], expected) << "cloth particle " << v;
-    kept += long(triangles[v].size());
-  }
-  std::printf("triangle lists: %.1f of %.1f candidate triangles per cloth particle\n", double(kept) / cloth.count,
-              double(all) / cloth.count);
-  EXPECT_LT(kept, all);
-  // Vertex-triangle contact over the lists, and over none (every item walks
-  // the grid and tests its own surface in the pass): the same bits.
-  const std::vector<Float4> before = sim->particles.downloadPredicted();
-  Buffer<Vec3> delta(Device::Cpu);
-  delta.resize(p.count);
-  resolveVertexTriangleContacts(Device::Cpu, p, lists.view(), delta.data());
-  const std::vector<Float4> viaLists = sim->particles.downloadPredicted();
-  for (int i = 0; i < p.count; ++i) p.predicted[i] = before[i];
-  lists.setSizing(PairListSizing{});
-  lists.build(p, sim->cloth.grid(), c, dt, false);
-  EXPECT_EQ(lists.itemsWithoutTriangleList(), cloth.count);
-  resolveVertexTriangleContacts(Device::Cpu, p, lists.view(), delta.data());
-  const std::vector<Float4> viaGrid = sim->particles.downloadPredicted();
-  int moved = 0;
-  for (int i = 0; i < p.count; ++i) {
-    EXPECT_TRUE(same(viaLists[i].xyz(), viaGrid[i].xyz())) << "slot " << i;
-    moved += same(viaLists[i].xyz(), before[i].xyz()) ? 0 : 1;
-  }
-  std::printf("vertex-triangle contact moved %d vertices\n", moved);
   EXPECT_GT(moved, 10);  // contact did act
 }
