@@ -23,6 +23,14 @@ struct OutputSettings {
   std::string plyColour = "saturation";  // channel the PLY vertex colours show; empty: none
 };
 
+// <WaterSurface>: a water surface mesh per frame (FrameWriter.h), for the
+// scenes that have the element.
+struct WaterSurfaceSettings {
+  float cellSize = 0.014f;  // m: the splat grid's cell (0.7 r0 at r0 = 0.02 m, as the paper)
+  float iso = 0.5f;         // relative density rho / rho0 of the surface
+  long long maxCells = 64ll * 1024 * 1024;  // larger grids take a coarser cell
+};
+
 // The writer threads a run gets. Automatic: 8 where the simulation runs on
 // the GPU (its host cores are free for writing: 8 measured fastest on a
 // 16-core host), 1 on the CPU, where OpenMP's threads take every core and

@@ -10,16 +10,11 @@
 #include <vtkSmartPointer.h>
 
 #include "Base/Vec3.h"
+#include "Output/OutputSettings.h"  // WaterSurfaceSettings
 
 class vtkPolyData;
 
 namespace soak {
-
-struct WaterSurfaceSettings {
-  float cellSize = 0.014f;  // m (0.7 r0 at r0 = 0.02 m)
-  float iso = 0.5f;         // relative density of the surface
-  long long maxCells = 64ll * 1024 * 1024;  // larger grids take a coarser cell
-};
 
 // The relative density on grid points lo + (i, j, k) * cell, x fastest:
 // values[(k * ny + j) * nx + i]. The grid covers every particle's support.

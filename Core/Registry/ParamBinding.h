@@ -77,6 +77,11 @@ class ParamBinding {
     setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.boolean(name); });
     return *this;
   }
+  ParamBinding& text(const std::string& name, std::string T::*member, const std::string& desc) {
+    decl_->text(name, defaults_.*member, desc);
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.text(name); });
+    return *this;
+  }
   // A choice of named values of an enum (or any comparable type).
   template <class E>
   ParamBinding& choice(const std::string& name, E T::*member, const std::vector<std::pair<std::string, E>>& options,

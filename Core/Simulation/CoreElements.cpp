@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <type_traits>
 
 #include "Base/Error.h"
 #include "Base/MessageText.h"
@@ -60,18 +61,25 @@ class WaterModule : public Module {
   ParamBinding<WaterSettings> water_;
 };
 
+// <WaterBlock>'s parameters (bound in registerCoreElements; the defaults here).
+struct WaterBlockParams {
+  Vec3 min{0.f, 0.f, 0.f};
+  Vec3 max{0.2f, 0.2f, 0.2f};
+  Vec3 velocity{0.f, 0.f, 0.f};
+};
+
 class WaterBlockModule : public Module {
  public:
-  explicit WaterBlockModule(const ElementParams& p) : p_(p) {}
+  WaterBlockModule(const WaterBlockParams& b, std::string where) : b_(b), where_(std::move(where)) {}
   void setup(Simulation& sim) override {
-    const Vec3 lo = p_.vector("min"), hi = p_.vector("max"), v = p_.vector("velocity");
+    const Vec3 lo = b_.min, hi = b_.max, v = b_.velocity;
     const float s = sim.water.spacing;
     if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
-      throw InputError("<WaterBlock>: max must exceed min on every axis", p_.where());
+      throw InputError("<WaterBlock>: max must exceed min on every axis", where_);
     // Counted in double first: 2^22 particles a side is 2^66, past any 64-bit count.
     auto along = [s](float extent) { return std::max(1.0, std::floor(double(extent / s) + 1e-4)); };
     const double nxd = along(hi.x - lo.x), nyd = along(hi.y - lo.y), nzd = along(hi.z - lo.z);
-    sim.checkParticleBudget(nxd * nyd * nzd, "<WaterBlock>", p_.where());
+    sim.checkParticleBudget(nxd * nyd * nzd, "<WaterBlock>", where_);
     const long long nx = (long long)nxd, ny = (long long)nyd, nz = (long long)nzd, total = nx * ny * nz;
     std::vector<ParticleInit> batch;
     batch.reserve(static_cast<std::size_t>(total));
@@ -91,40 +99,80 @@ class WaterBlockModule : public Module {
   }
 
  private:
-  ElementParams p_;
+  WaterBlockParams b_;
+  std::string where_;
 };
+
+// The collider elements' parameters, one struct per shape (the defaults
+// here); friction, name and path are common to all three.
+struct PlaneParams {
+  Vec3 point{0.f, 0.f, 0.f};
+  Vec3 normal{0.f, 1.f, 0.f};
+  float friction = 0.1f;
+  std::string name, path;
+};
+struct BoxParams {
+  Vec3 min{-1.f, -1.f, -1.f};
+  Vec3 max{1.f, 1.f, 1.f};
+  bool inside = false;
+  float friction = 0.1f;
+  std::string name, path;
+};
+struct SphereParams {
+  Vec3 center{0.f, 0.f, 0.f};
+  float radius = 0.1f;
+  bool inside = false;
+  float friction = 0.1f;
+  std::string name, path;
+};
+
+// What a collider element gives its module: the collider at rest, its name and scripted path.
+struct ColliderElement {
+  Collider collider;
+  std::string name, path, where;
+};
+
+ColliderElement colliderOf(const PlaneParams& p, const std::string& where) {
+  ColliderElement e{Collider{}, p.name, p.path, where};
+  e.collider.shape = kColliderPlane;
+  e.collider.friction = p.friction;
+  e.collider.a = p.point;
+  if (length(p.normal) < 1e-12f) throw InputError("<Plane>: normal must not be zero", where);
+  e.collider.b = p.normal / length(p.normal);
+  return e;
+}
+ColliderElement colliderOf(const BoxParams& p, const std::string& where) {
+  ColliderElement e{Collider{}, p.name, p.path, where};
+  e.collider.shape = kColliderBox;
+  e.collider.friction = p.friction;
+  e.collider.a = p.min;
+  e.collider.b = p.max;
+  if (!(p.max.x > p.min.x && p.max.y > p.min.y && p.max.z > p.min.z))
+    throw InputError("<Box>: max must exceed min on every axis", where);
+  e.collider.inside = p.inside ? 1 : 0;
+  return e;
+}
+ColliderElement colliderOf(const SphereParams& p, const std::string& where) {
+  ColliderElement e{Collider{}, p.name, p.path, where};
+  e.collider.shape = kColliderSphere;
+  e.collider.friction = p.friction;
+  e.collider.a = p.center;
+  e.collider.radius = p.radius;
+  e.collider.inside = p.inside ? 1 : 0;
+  return e;
+}
 
 class ColliderModule : public Module {
  public:
-  ColliderModule(const ElementParams& p, int shape) : p_(p), shape_(shape) {}
+  explicit ColliderModule(ColliderElement e) : e_(std::move(e)), shape_(e_.collider.shape), base_(e_.collider) {}
   void setup(Simulation& sim) override {
-    Collider c;
-    c.shape = shape_;
-    c.friction = p_.realf("friction");
-    if (shape_ == kColliderPlane) {
-      c.a = p_.vector("point");
-      Vec3 n = p_.vector("normal");
-      if (length(n) < 1e-12f) throw InputError("<Plane>: normal must not be zero", p_.where());
-      c.b = n / length(n);
-    } else if (shape_ == kColliderBox) {
-      c.a = p_.vector("min");
-      c.b = p_.vector("max");
-      if (!(c.b.x > c.a.x && c.b.y > c.a.y && c.b.z > c.a.z))
-        throw InputError("<Box>: max must exceed min on every axis", p_.where());
-      c.inside = p_.boolean("inside") ? 1 : 0;
-    } else {
-      c.a = p_.vector("center");
-      c.radius = p_.realf("radius");
-      c.inside = p_.boolean("inside") ? 1 : 0;
-    }
-    base_ = c;
-    path_ = parsePath(p_.text("path"), p_.where());
+    path_ = parsePath(e_.path, e_.where);
     index_ = int(sim.colliders.size());
-    const std::string name = p_.text("name");
+    const std::string& name = e_.name;
     for (const auto& other : sim.colliderNames)
       if (!name.empty() && other == name)
-        throw InputError("a collider named '" + name + "' already exists", p_.where());
-    sim.colliders.push_back(c);
+        throw InputError("a collider named '" + name + "' already exists", e_.where);
+    sim.colliders.push_back(base_);
     sim.colliderNames.push_back(name);
     sim.collidersChanged();
   }
@@ -174,7 +222,7 @@ class ColliderModule : public Module {
       }
     return path_.back().offset;
   }
-  ElementParams p_;
+  ColliderElement e_;
   int shape_;
   Collider base_;
   std::vector<Key> path_;
@@ -258,37 +306,57 @@ void registerCoreElements(ModuleRegistry& r) {
               0.0, 1e3);
     r.add(decl.makeUnique().create([water](const ElementParams& p) { return std::make_unique<WaterModule>(p, water); }));
   }
-  r.add(ElementDecl("WaterBlock", "A box filled with water particles on a lattice of the water spacing.", "Water")
-            .vector("min", "m", "0 0 0", "Lower corner.")
-            .vector("max", "m", "0.2 0.2 0.2", "Upper corner.")
-            .vector("velocity", "m/s", "0 0 0", "Initial velocity of every particle.")
-            .create([](const ElementParams& p) { return std::make_unique<WaterBlockModule>(p); }));
-  r.add(ElementDecl("Plane", "Infinite plane collider; particles stay on the side the normal points to.",
-                    "Colliders")
-            .vector("point", "m", "0 0 0", "A point on the plane.")
-            .vector("normal", "", "0 1 0", "Normal (need not be unit length).")
-            .real("friction", "", "0.1", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
-            .text("name", "", "Name, for cloth attachTo.")
-            .text("path", "", "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.")
-            .create([](const ElementParams& p) { return std::make_unique<ColliderModule>(p, kColliderPlane); }));
-  r.add(ElementDecl("Box", "Axis-aligned box collider: a solid obstacle, or a container with inside=\"true\".",
-                    "Colliders")
-            .vector("min", "m", "-1 -1 -1", "Lower corner.")
-            .vector("max", "m", "1 1 1", "Upper corner.")
-            .boolean("inside", "false", "Keep particles inside the box (a tank) instead of outside.")
-            .real("friction", "", "0.1", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
-            .text("name", "", "Name, for cloth attachTo.")
-            .text("path", "", "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.")
-            .create([](const ElementParams& p) { return std::make_unique<ColliderModule>(p, kColliderBox); }));
-  r.add(ElementDecl("Sphere", "Sphere collider: a solid ball, or a spherical container with inside=\"true\".",
-                    "Colliders")
-            .vector("center", "m", "0 0 0", "Centre.")
-            .real("radius", "m", "0.1", "Radius.", 0.0, 1e6, true)
-            .boolean("inside", "false", "Keep particles inside the sphere instead of outside.")
-            .real("friction", "", "0.1", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
-            .text("name", "", "Name, for cloth attachTo.")
-            .text("path", "", "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.")
-            .create([](const ElementParams& p) { return std::make_unique<ColliderModule>(p, kColliderSphere); }));
+  {
+    ElementDecl decl("WaterBlock", "A box filled with water particles on a lattice of the water spacing.", "Water");
+    ParamBinding<WaterBlockParams> block(decl);
+    block.vector("min", &WaterBlockParams::min, "m", "Lower corner.")
+        .vector("max", &WaterBlockParams::max, "m", "Upper corner.")
+        .vector("velocity", &WaterBlockParams::velocity, "m/s", "Initial velocity of every particle.");
+    r.add(decl.create([block](const ElementParams& p) {
+      return std::make_unique<WaterBlockModule>(block.read(p), p.where());
+    }));
+  }
+  // friction, name and path of every collider element.
+  const auto common = [](auto& binding, auto* params) {
+    using P = std::remove_pointer_t<decltype(params)>;
+    binding.real("friction", &P::friction, "", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
+        .text("name", &P::name, "Name, for cloth attachTo.")
+        .text("path", &P::path, "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.");
+  };
+  const auto addCollider = [&r](ElementDecl& decl, auto binding) {
+    r.add(decl.create([binding](const ElementParams& p) {
+      return std::make_unique<ColliderModule>(colliderOf(binding.read(p), p.where()));
+    }));
+  };
+  {
+    ElementDecl decl("Plane", "Infinite plane collider; particles stay on the side the normal points to.",
+                     "Colliders");
+    ParamBinding<PlaneParams> plane(decl);
+    plane.vector("point", &PlaneParams::point, "m", "A point on the plane.")
+        .vector("normal", &PlaneParams::normal, "", "Normal (need not be unit length).");
+    common(plane, static_cast<PlaneParams*>(nullptr));
+    addCollider(decl, plane);
+  }
+  {
+    ElementDecl decl("Box", "Axis-aligned box collider: a solid obstacle, or a container with inside=\"true\".",
+                     "Colliders");
+    ParamBinding<BoxParams> box(decl);
+    box.vector("min", &BoxParams::min, "m", "Lower corner.")
+        .vector("max", &BoxParams::max, "m", "Upper corner.")
+        .boolean("inside", &BoxParams::inside, "Keep particles inside the box (a tank) instead of outside.");
+    common(box, static_cast<BoxParams*>(nullptr));
+    addCollider(decl, box);
+  }
+  {
+    ElementDecl decl("Sphere", "Sphere collider: a solid ball, or a spherical container with inside=\"true\".",
+                     "Colliders");
+    ParamBinding<SphereParams> sphere(decl);
+    sphere.vector("center", &SphereParams::center, "m", "Centre.")
+        .real("radius", &SphereParams::radius, "m", "Radius.", 0.0, 1e6, true)
+        .boolean("inside", &SphereParams::inside, "Keep particles inside the sphere instead of outside.");
+    common(sphere, static_cast<SphereParams*>(nullptr));
+    addCollider(decl, sphere);
+  }
   r.add(ElementDecl("Plugin",
                     "Loads a plugin library before the rest of the scene is read: by name from the plugin "
                     "directory, or by path (relative to the scene file).",

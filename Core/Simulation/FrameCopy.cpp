@@ -141,8 +141,10 @@ OutputLayout Simulation::outputLayout() const {
   OutputLayout l;
   for (int c = 0; c < particles.channelCount(); ++c) l.channelNames.push_back(particles.channelName(c));
   l.cloths = cloth.objects();
-  l.surfaceCellSize = settings.surfaceCellSize;
-  l.surfaceIso = settings.surfaceIso;
+  if (settings.surface) {
+    l.surfaceCellSize = settings.surface->cellSize;
+    l.surfaceIso = settings.surface->iso;
+  }
   l.water = water;
   return l;
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 
 #include "Base/Vec3.h"
@@ -38,8 +39,7 @@ struct SimulationSettings {
   int contactPasses = 2;       // passes of cloth contact (self and cloth-cloth) per step
   Vec3 domainMin{-1e3f, -1e3f, -1e3f};  // water leaving this box is drained
   Vec3 domainMax{1e3f, 1e3f, 1e3f};
-  float surfaceCellSize = 0.f;  // m; > 0: write a water surface mesh per frame (<WaterSurface>)
-  float surfaceIso = 0.5f;      // relative density of that surface
+  std::optional<WaterSurfaceSettings> surface;  // a water surface mesh per frame where set (<WaterSurface>)
   ResourceLimits limits;
   OutputSettings output;        // <Output>
   std::string where;            // <Simulation>'s file:line (empty when the scene has none)

@@ -3,14 +3,21 @@
 #include "Pipeline/Pipeline.h"
 #include "Pipeline/StageNames.h"
 #include "Plugins/PluginApi.h"
+#include "Registry/ParamBinding.h"
 #include "Simulation/Simulation.h"
 #include "SteadyWind.h"
 
 namespace {
 
+// <SteadyWind>'s parameters, with their defaults.
+struct SteadyWindParams {
+  soak::Vec3 velocity{1.f, 0.f, 0.f};  // m/s
+  float rate = 2.f;                    // 1/s
+};
+
 class SteadyWindModule : public soak::Module {
  public:
-  SteadyWindModule(soak::Vec3 wind, float rate) : wind_(wind), rate_(rate) {}
+  explicit SteadyWindModule(const SteadyWindParams& p) : wind_(p.velocity), rate_(p.rate) {}
   void addStages(soak::Pipeline& pipeline, soak::Simulation&) override {
     const soak::Vec3 wind = wind_;
     const float rate = rate_;
@@ -28,12 +35,11 @@ class SteadyWindModule : public soak::Module {
 }  // namespace
 
 SOAK_PLUGIN(SteadyWind) {
-  registry.add(soak::ElementDecl("SteadyWind", "A steady wind that free particles relax toward (template plugin).",
-                                 "Plugins")
-                   .vector("velocity", "m/s", "1 0 0", "Wind velocity w.")
-                   .real("rate", "1/s", "2", "Relaxation rate k in dv/dt = k (w - v).", 0.0, 1e4)
-                   .makeUnique()
-                   .create([](const soak::ElementParams& p) {
-                     return std::make_unique<SteadyWindModule>(p.vector("velocity"), p.realf("rate"));
-                   }));
+  soak::ElementDecl decl("SteadyWind", "A steady wind that free particles relax toward (template plugin).", "Plugins");
+  soak::ParamBinding<SteadyWindParams> params(decl);
+  params.vector("velocity", &SteadyWindParams::velocity, "m/s", "Wind velocity w.")
+      .real("rate", &SteadyWindParams::rate, "1/s", "Relaxation rate k in dv/dt = k (w - v).", 0.0, 1e4);
+  registry.add(decl.makeUnique().create([params](const soak::ElementParams& p) {
+    return std::make_unique<SteadyWindModule>(params.read(p));
+  }));
 }

@@ -4,13 +4,19 @@
 #include "Pipeline/Pipeline.h"
 #include "Pipeline/StageNames.h"
 #include "Plugins/PluginApi.h"
+#include "Registry/ParamBinding.h"
 #include "Simulation/Simulation.h"
 
 namespace {
 
+// <AirDrag>'s parameters, with their defaults.
+struct AirDragParams {
+  float coefficient = 0.5f;  // 1/s
+};
+
 class AirDragModule : public soak::Module {
  public:
-  explicit AirDragModule(float k) : k_(k) {}
+  explicit AirDragModule(const AirDragParams& params) : k_(params.coefficient) {}
   void addStages(soak::Pipeline& pipeline, soak::Simulation&) override {
     const float k = k_;
     pipeline.insertBefore(soak::stage::kPredict, {"airdrag.apply", [k](soak::Simulation& s) {
@@ -26,10 +32,10 @@ class AirDragModule : public soak::Module {
 }  // namespace
 
 SOAK_PLUGIN(AirDrag) {
-  registry.add(soak::ElementDecl("AirDrag", "Linear air drag on every free particle (example plugin).", "Plugins")
-                   .real("coefficient", "1/s", "0.5", "Drag rate k in dv/dt = -k v.", 0.0, 1e4)
-                   .makeUnique()
-                   .create([](const soak::ElementParams& p) {
-                     return std::make_unique<AirDragModule>(p.realf("coefficient"));
-                   }));
+  soak::ElementDecl decl("AirDrag", "Linear air drag on every free particle (example plugin).", "Plugins");
+  soak::ParamBinding<AirDragParams> params(decl);
+  params.real("coefficient", &AirDragParams::coefficient, "1/s", "Drag rate k in dv/dt = -k v.", 0.0, 1e4);
+  registry.add(decl.makeUnique().create([params](const soak::ElementParams& p) {
+    return std::make_unique<AirDragModule>(params.read(p));
+  }));
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string>
 
 #include "Registry/ParamBinding.h"
 #include "Scene/Scene.h"
@@ -21,6 +22,8 @@ struct Knobs {
   int passes = 3;
   bool on = true;
   Shape shape = Shape::Square;
+  std::string label = "plain";
+  Vec3 offset{0.f, 1.5f, 0.f};
 };
 
 struct KnobsModule : Module {
@@ -36,7 +39,9 @@ void declareKnobs(test::TestRegistry& reg, Knobs* made) {
       .real("weight", &Knobs::weight, "", "A weight.", 0.0, 1.0)
       .integer("passes", &Knobs::passes, "Passes.", 0, 100)
       .boolean("on", &Knobs::on, "Switch.")
-      .choice<Shape>("shape", &Knobs::shape, {{"round", Shape::Round}, {"square", Shape::Square}}, "Shape.");
+      .choice<Shape>("shape", &Knobs::shape, {{"round", Shape::Round}, {"square", Shape::Square}}, "Shape.")
+      .text("label", &Knobs::label, "A name.")
+      .vector("offset", &Knobs::offset, "m", "An offset.");
   reg.registry.add(decl.create([bind, made](const ElementParams& e) {
     *made = bind.read(e);
     return std::make_unique<KnobsModule>(*made);
@@ -65,6 +70,8 @@ TEST(ParamBinding, DefaultsAreTheMembersAndReadBackExactly) {
   EXPECT_EQ(decl->find("passes")->defaultValue, "3");
   EXPECT_EQ(decl->find("on")->defaultValue, "true");
   EXPECT_EQ(decl->find("shape")->defaultValue, "square");
+  EXPECT_EQ(decl->find("label")->defaultValue, "plain");
+  EXPECT_EQ(decl->find("offset")->defaultValue, "0 1.5 0");
   EXPECT_EQ(decl->find("ratePerSecond")->defaultValue, "6.666667");  // 0.1 per 0.015 s
   const Knobs d = parse("<Knobs/>"), defaults;
   EXPECT_EQ(d.rate, defaults.rate);  // the same bits after the scale and back
@@ -72,10 +79,15 @@ TEST(ParamBinding, DefaultsAreTheMembersAndReadBackExactly) {
   EXPECT_EQ(d.passes, defaults.passes);
   EXPECT_EQ(d.on, defaults.on);
   EXPECT_EQ(d.shape, defaults.shape);
+  EXPECT_EQ(d.label, defaults.label);
+  EXPECT_EQ(d.offset.y, defaults.offset.y);
 }
 
 TEST(ParamBinding, SceneValuesFillTheMembers) {
-  const Knobs k = parse("<Knobs ratePerSecond='20' weight='0.25' passes='7' on='false' shape='round'/>");
+  const Knobs k =
+      parse("<Knobs ratePerSecond='20' weight='0.25' passes='7' on='false' shape='round' label='' offset='1 2 3'/>");
+  EXPECT_EQ(k.label, "");
+  EXPECT_EQ(k.offset.z, 3.f);
   EXPECT_EQ(k.rate, float(20.0 * 0.015));
   EXPECT_EQ(k.weight, 0.25f);
   EXPECT_EQ(k.passes, 7);

@@ -2,6 +2,7 @@
 // (one row: the stage, where it goes, the function that runs it).
 #include "Pipeline/StageTable.h"
 #include "Plugins/PluginApi.h"
+#include "Registry/ParamBinding.h"
 #include "Simulation/Simulation.h"
 #include "Stages/WetStages.h"
 #include "Wring.h"
@@ -14,7 +15,7 @@ const soak::StageRow<wring::WringState> kWringStages[] = {
 
 class WringModule : public soak::Module {
  public:
-  explicit WringModule(float cap) { state_.cap = cap; }
+  explicit WringModule(const wring::WringState& state) : state_(state) {}
   void addStages(soak::Pipeline& pipeline, soak::Simulation&) override {
     soak::addStageTable(pipeline, state_, kWringStages);
   }
@@ -26,9 +27,10 @@ class WringModule : public soak::Module {
 }  // namespace
 
 SOAK_PLUGIN(Wring) {
-  registry.add(soak::ElementDecl("Wring", "Wrings cloth above a saturation into its emission buffer (test plugin).",
-                                 "Plugins")
-                   .real("cap", "", "0.2", "The most saturation a cloth particle keeps after wet.diffuse.", 0.0, 1.0)
-                   .makeUnique()
-                   .create([](const soak::ElementParams& p) { return std::make_unique<WringModule>(p.realf("cap")); }));
+  soak::ElementDecl decl("Wring", "Wrings cloth above a saturation into its emission buffer (test plugin).", "Plugins");
+  soak::ParamBinding<wring::WringState> params(decl);
+  params.real("cap", &wring::WringState::cap, "", "The most saturation a cloth particle keeps after wet.diffuse.", 0.0,
+              1.0);
+  registry.add(decl.makeUnique().create(
+      [params](const soak::ElementParams& p) { return std::make_unique<WringModule>(params.read(p)); }));
 }
