@@ -5,16 +5,13 @@
 
 #include "Backend/Primitives.h"
 #include "Backend/ForEach.h"
-#include "Coupling/TriangleCoupling.h"
-#include "Physics/Integrate.h"
-#include "Pipeline/StageNames.h"
 #include "Simulation/Instability.h"
 
 namespace soak {
 
 Simulation::Simulation(Device device)
     : particles(device), grid(device), cloth(device), fluid(device), vertexFields(device), device_(device),
-      clothStep_(device), instabilityScratch_(device), removeFlag_(device), couplingMoved_(device), removedMass_(device), sinkBuffer_(device), colliderBuffer_(device) {}
+      stages_(device), instabilityScratch_(device), removeFlag_(device), removedMass_(device), colliderBuffer_(device) {}
 
 Simulation::~Simulation() = default;
 
@@ -38,8 +35,8 @@ void Simulation::initialize() {
   cloth.updateSlots(particles.view());
   std::vector<Vec3> sinkCorners;
   for (const auto& box : sinks) sinkCorners.insert(sinkCorners.end(), {box.first, box.second});
-  sinkBuffer_.upload(sinkCorners);
-  addCoreStages();
+  stages_.sinkCorners.upload(sinkCorners);
+  addCoreStages(pipeline, stages_);
   for (std::size_t i = 0; i < modules_.size(); ++i) {
     pipeline.collectFor(origins_[i].where);
     modules_[i]->addStages(pipeline, *this);
@@ -50,81 +47,6 @@ void Simulation::initialize() {
 FluidContext Simulation::fluidContext() const {
   return {grid.view(), water, float(settings.timeStep), deviceColliders(), int(colliders.size()),
           vertexFields.find(field::kFrictionScale)};
-}
-
-void Simulation::addCoreStages() {
-  pipeline.append({stage::kPredict, [](Simulation& s) {
-                     predictPositions(s.device(), s.particles.view(), s.settings.gravity, s.settings.timeStep);
-                   }});
-  // Before the grid is built, so that removing particles never leaves a stale grid.
-  pipeline.append({stage::kDrain, [](Simulation& s) { s.drainWater(); }});
-  pipeline.append({stage::kNeighbours, [](Simulation& s) {
-                     s.grid.build(s.particles, s.maxSupportRadius());
-                     if (!s.cloth.empty()) {
-                       s.cloth.updateSlots(s.particles.view());
-                       s.cloth.buildGrid(s.grid.view());
-                       s.fluid.computeBoundaryVolumes(s.particles.view(), s.cloth.grid(),
-                                                      clothSlots(s.cloth.view()));
-                     }
-                   }});
-  pipeline.append({stage::kFluidSolve, [](Simulation& s) {
-                     s.fluid.solve(s.particles, s.fluidContext(), s.sizeListsNow());
-                   }});
-  pipeline.append({stage::kClothSolve, [](Simulation& s) {
-                     if (s.cloth.empty()) return;
-                     const SimulationSettings& set = s.settings;
-                     s.clothStep_.run(s.particles.view(), s.cloth, s.deviceColliders(), int(s.colliders.size()),
-                                      {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothIterations,
-                                       set.clothSpectralRadius, set.contactPasses, kCollisionRadiusScale,
-                                       s.sizeListsNow()});
-                   }});
-  pipeline.append({stage::kCollide, [](Simulation& s) {
-                     projectColliders(s.device(), s.particles.view(), s.deviceColliders(),
-                                      static_cast<int>(s.colliders.size()), kCollisionRadiusScale,
-                                      s.settings.timeStep, s.vertexFields.find(field::kFrictionScale));
-                   }});
-  pipeline.append({stage::kCoupling, [](Simulation& s) {
-                     if (s.cloth.empty()) return;
-                     s.couplingMoved_.resize(std::size_t(s.particles.count()));
-                     projectWaterOutOfCloth(s.device(), s.particles.view(), s.cloth.grid(), s.cloth.view(),
-                                            s.vertexFields.find(field::kCouplingStiffness), s.settings.couplingPasses, s.couplingMoved_.data(),
-                                            s.couplingMinLanes);
-                   }});
-  pipeline.append({stage::kFinalize, [](Simulation& s) {
-                     updateVelocities(s.device(), s.particles.view(), s.settings.timeStep,
-                                      s.cloth.empty() ? nullptr : s.clothStep_.velocityFix());
-                     s.fluid.applyViscosity(s.particles.view(), s.fluidContext());
-                   }});
-}
-
-void Simulation::drainWater() {
-  ParticleView p = particles.view();
-  const Vec3 lo = settings.domainMin, hi = settings.domainMax;
-  const Vec3* sinkBox = sinkBuffer_.data();
-  const int sinkCount = int(sinks.size());
-  // Marks the slots, nothing more: the host learns of them at the next
-  // compaction (no reduction here, so that the step never waits).
-  if (p.count > 0) forEach(device_, p.count, SOAK_LAMBDA(int i) {
-    if (!isWater(p.phase[i])) return;
-    bool out = !(p.mass[i] > 0.f);  // wholly absorbed by cloth (its mass is held there now)
-    const Vec3 x = p.position[i].xyz();
-    // A non-finite position is an instability, not water that left the
-    // domain: keep it for the check (Instability.h) to report.
-    if (!out && !isFinite(x)) return;
-    if (!out) out = !(x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z);
-    for (int k = 0; k < sinkCount && !out; ++k) {
-      const Vec3 a = sinkBox[2 * k], b = sinkBox[2 * k + 1];
-      out = x.x >= a.x && x.y >= a.y && x.z >= a.z && x.x <= b.x && x.y <= b.y && x.z <= b.z;
-    }
-    if (!out) return;
-    // Inert from here on; a drained slot keeps its mass (counted at compaction).
-    p.phase[i] = kPhaseRemoved;
-    if (!(p.mass[i] > 0.f)) p.mass[i] = 0.f;
-    p.position[i] = Float4(x, 0.f);
-    p.predicted[i] = Float4(x, 0.f);
-    p.velocity[i] = Vec3(0.f, 0.f, 0.f);
-  }, "drain.mark");
-  if (maintenanceStep()) compact();
 }
 
 void Simulation::compact() {

@@ -6,7 +6,6 @@
 #include "Backend/Buffer.h"
 #include "Backend/DownloadQueue.h"
 #include "Checkpoint/CheckpointState.h"
-#include "Cloth/ClothStep.h"
 #include "Cloth/ClothSystem.h"
 #include "Cloth/VertexFields.h"
 #include "Fluid/FluidSolver.h"
@@ -17,6 +16,7 @@
 #include "Pipeline/Pipeline.h"
 #include "Registry/Module.h"
 #include "Simulation/Settings.h"
+#include "Simulation/Stages/CoreStages.h"
 
 namespace soak {
 
@@ -51,10 +51,6 @@ class Simulation final : public CheckpointState, public FrameSource {
   void initialize();
   // One time step.
   void step(bool profile = false);
-
-  // Marks water inside sinks, outside the domain or wholly absorbed as
-  // removed (kPhaseRemoved); on a maintenance step, compacts.
-  void drainWater();
 
   // Counts stay on the device: a step waits for the device (hostWaits())
   // only on maintenance steps, those whose index is a multiple of
@@ -164,16 +160,13 @@ class Simulation final : public CheckpointState, public FrameSource {
   int nextWaterId = 0;
 
  private:
-  void addCoreStages();
   // Moved colliders to the device: by a kernel's parameters (no wait).
   void writeColliders();
   Device device_;
-  ClothStep clothStep_;  // the cloth.solve stage and its buffers
+  CoreStageState stages_;  // the core stages' own buffers (Stages/CoreStages.h)
   Buffer<float> instabilityScratch_;
-  Buffer<int> removeFlag_;
-  Buffer<int> couplingMoved_;  // scratch of the coupling passes
+  Buffer<int> removeFlag_;  // compact()
   Buffer<float> removedMass_;
-  Buffer<Vec3> sinkBuffer_;
   std::vector<std::unique_ptr<Module>> modules_;
   std::vector<ModuleOrigin> origins_;  // by module
   std::unique_ptr<DownloadQueue> statsDownloads_;  // collectStats()
