@@ -96,10 +96,6 @@ class Simulation final : public CheckpointState, public FrameSource {
   // Per-cloth-vertex fields shared by name (Cloth/VertexFields.h): the
   // coupling stage reads field::kCouplingStiffness, WetCloth writes it.
   VertexFields vertexFields;
-  // Fewest GPU lanes per water particle in the coupling passes (Base/Lanes.h;
-  // more are used where fewer than a million threads would run). A tuning
-  // knob for soak-bench's --coupling-lanes; Doc/performance.md has the sweep.
-  int couplingMinLanes = 1;
 
   // Check for an instability after every stage (slow; names the stage).
   // Throws InstabilityError.

@@ -6,7 +6,6 @@
 //   soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]
 //              [--scale-sheet paper|dense]   (the scale scenes' sheet: see scaleCase)
 //              [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]
-//              [--coupling-lanes N]  (fewest GPU lanes per water particle in coupling)
 //              [--set Element.attr=value ...]   (applied to every case, e.g. to compare solver variants)
 //
 // Each case: the scene is built, advanced by its warm-up (simulated seconds
@@ -142,12 +141,10 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-Result runCase(const Case& c, Device device, int steps, const std::vector<std::string>& overrides,
-               int couplingLanes) {
+Result runCase(const Case& c, Device device, int steps, const std::vector<std::string>& overrides) {
   const std::size_t before = deviceBytesInUse(device);
   std::unique_ptr<LoadedScene> loaded = loadScene({c.scenePath, c.text, overrides, {}}, device);
   Simulation& sim = *loaded->sim;
-  sim.couplingMinLanes = couplingLanes;
   const double dt = sim.settings.timeStep;
   const int warm = c.warmupSteps + int(std::lround(c.warmupSeconds / dt));
   for (int s = 0; s < warm; ++s) sim.step(false);
@@ -222,7 +219,7 @@ int usage() {
                "usage: soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]\n"
                "                  [--scale-sheet paper|dense]\n"
                "                  [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]\n"
-               "                  [--set Element.attr=value ...] [--coupling-lanes N]\n");
+               "                  [--set Element.attr=value ...]\n");
   return 2;
 }
 
@@ -231,7 +228,7 @@ int usage() {
 int main(int argc, char** argv) {
   std::string deviceName = "auto", scenes = "Scenes", json, only, scale;
   ScaleSheet sheet = ScaleSheet::Paper;
-  int steps = 50, warmupSteps = 20, couplingLanes = 1;
+  int steps = 50, warmupSteps = 20;
   bool table2 = true;
   std::vector<std::string> overrides;
   for (int i = 1; i < argc; ++i) {
@@ -255,7 +252,6 @@ int main(int argc, char** argv) {
       else if (a == "--json") json = next();
       else if (a == "--no-table2") table2 = false;
       else if (a == "--set") overrides.push_back(next());
-      else if (a == "--coupling-lanes") couplingLanes = std::stoi(next());
       else if (a == "--help" || a == "-h") return usage(), 0;
       else return std::fprintf(stderr, "soak-bench: unknown argument '%s'\n", a.c_str()), usage();
     } catch (const std::exception& e) {
@@ -281,7 +277,7 @@ int main(int argc, char** argv) {
     std::vector<Result> results;
     for (const Case& c : cases) {
       std::fprintf(stderr, "soak-bench: %s ...\n", c.name.c_str());
-      results.push_back(runCase(c, device, steps, overrides, couplingLanes));
+      results.push_back(runCase(c, device, steps, overrides));
       const Result& r = results.back();
       std::fprintf(stderr, "soak-bench: %s: %d water + %d cloth, %.3f ms per step (wetting %.3f ms)\n",
                    c.name.c_str(), r.water, r.cloth, r.totalMs, r.wettingMs);

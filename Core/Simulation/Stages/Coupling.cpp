@@ -12,7 +12,7 @@ void runCoupling(CoreStageState& state, Simulation& sim) {
   state.couplingMoved.resize(std::size_t(sim.particles.count()));
   projectWaterOutOfCloth(sim.device(), sim.particles.view(), sim.cloth.grid(), sim.cloth.view(),
                          sim.vertexFields.find(field::kCouplingStiffness), sim.settings.couplingPasses,
-                         state.couplingMoved.data(), sim.couplingMinLanes);
+                         state.couplingMoved.data());
 }
 
 }  // namespace soak
