@@ -4,17 +4,9 @@
 #include "Backend/ForEachPhased.h"
 #include "Base/ReadOnly.h"
 #include "Physics/Collider.h"
+#include "Physics/Integrate.h"
 
 namespace soak {
-
-void moveAttachedVertices(Device d, ParticleView p, ClothView c, const Collider* colliders) {
-  forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
-    const int k = c.attachCollider[v];
-    if (k < 0) return;
-    const int i = c.vertexSlot[v];
-    p.predicted[i] = Float4(c.restPosition[v] + colliders[k].displacement, p.predicted[i].w);
-  }, "cloth.attach");
-}
 
 void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vector<int>& stretchColours,
                            const std::vector<int>& bendColours, int iterations, float dt) {
@@ -93,6 +85,9 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
                   ClothSubstepScratch s, const std::function<void(ParticleView)>& contacts) {
   const ClothView c = cloth.view();
   const float h = dt / float(substeps);
+  // One sub-step is the step itself: its free motion is the predict stage's
+  // x* as it stands.
+  const bool predictedByStep = substeps == 1;
   // Non-cloth particles keep their place in the sub-step view.
   forEach(d, p.count, SOAK_LAMBDA(int i) {
     s.velocityFix[i] = Vec3(0.f, 0.f, 0.f);
@@ -109,16 +104,19 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
   }, "cloth.substep.begin");
   for (int sub = 0; sub < substeps; ++sub) {
     const float along = float(sub + 1) / float(substeps);
+    const bool last = sub + 1 == substeps;
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
       const int i = c.vertexSlot[v];
       const Float4 x = p.position[i];
       if (x.w == 0.f) {
         const int k = c.attachCollider[v];
-        // Attached vertices follow their collider's path; fixed pins stay.
+        // Attached vertices follow their collider's path, reaching its end
+        // point with the last sub-step; fixed pins stay.
         const Vec3 target = k >= 0 ? c.restPosition[v] + colliders[k].displacement : x.xyz();
-        p.predicted[i] = Float4(x.xyz() + (target - x.xyz()) * along, 0.f);
+        p.predicted[i] = Float4(last ? target : x.xyz() + (target - x.xyz()) * along, 0.f);
         return;
       }
+      if (predictedByStep) return;
       const Vec3 vel = s.velocity[i] + gravity * h;
       s.velocity[i] = vel;
       p.predicted[i] = Float4(s.start[i].xyz() + vel * h, x.w);
@@ -126,15 +124,21 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     cloth.resetMultipliers();
     solveClothConstraints(d, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), iterations, h);
     solveClothJacobi(d, p, c, iterations, h, rho);
-    forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
-      const int i = c.vertexSlot[v];
-      const Float4 xp = p.predicted[i];
-      if (xp.w == 0.f) return;
-      const float r = collisionRadiusScale * p.radius[i];
-      const float friction = c.frictionScale ? c.frictionScale[v] : 1.f;
-      p.predicted[i] =
-          Float4(projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, h, friction), xp.w);
-    }, "cloth.substep.colliders");
+    if (predictedByStep) {
+      // The paper's single pass projects every particle out of the
+      // colliders here, the water too (which collide projects again).
+      projectColliders(d, p, colliders, colliderCount, collisionRadiusScale, h, c.frictionScale);
+    } else {
+      forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+        const int i = c.vertexSlot[v];
+        const Float4 xp = p.predicted[i];
+        if (xp.w == 0.f) return;
+        const float r = collisionRadiusScale * p.radius[i];
+        const float friction = c.frictionScale ? c.frictionScale[v] : 1.f;
+        p.predicted[i] =
+            Float4(projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, h, friction), xp.w);
+      }, "cloth.substep.colliders");
+    }
     contacts(substepView);
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
       const int i = c.vertexSlot[v];

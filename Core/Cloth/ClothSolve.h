@@ -8,9 +8,6 @@
 
 namespace soak {
 
-// Pinned vertices attached to a collider follow it: x* = rest + displacement.
-void moveAttachedVertices(Device d, ParticleView p, ClothView c, const Collider* colliders);
-
 // `iterations` rounds of stretch (Eq. 8) and bend (Eq. 9) projections, one
 // colour at a time (Gauss-Seidel between colours, parallel within one).
 void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vector<int>& stretchColours,
@@ -32,13 +29,16 @@ struct ClothSubstepScratch {
 // (Macklin et al. 2019, "Small steps in physics simulation"): each sub-step
 // integrates gravity over h, moves attached vertices along their collider's
 // path, runs `iterations` constraint rounds with time step h and projects the
-// cloth out of the colliders. The strain left by too few iterations grows
-// with the step squared, so K sub-steps of n iterations leave far less than
-// one step of K n (Doc/model.md, "Cloth sub-steps"). `contacts` runs after
-// each sub-step's colliders with a view whose `position` is the sub-step's
-// start (the x0 of the contact tests). Writes the cloth's
-// predicted positions and velocityFix, which finalize adds to (x* - x) / dt so
-// that a cloth particle leaves the step with its last sub-step's velocity.
+// cloth out of the colliders. With one sub-step (the paper's PBD scenes)
+// the free vertices start from the predict stage's x* and every particle is
+// projected out of the colliders, as the paper's single pass does. The
+// strain left by too few iterations grows with the step squared, so K
+// sub-steps of n iterations leave far less than one step of K n
+// (Doc/model.md, "Cloth sub-steps"). `contacts` runs after each sub-step's
+// colliders with a view whose `position` is the sub-step's start (the x0 of
+// the contact tests). Writes the cloth's predicted positions and
+// velocityFix, which finalize adds to (x* - x) / dt so that a cloth particle
+// leaves the step with its last sub-step's velocity.
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
                   ClothSubstepScratch scratch, const std::function<void(ParticleView)>& contacts);

@@ -2,7 +2,6 @@
 
 #include "Cloth/ClothContact.h"
 #include "Cloth/ClothSolve.h"
-#include "Physics/Integrate.h"
 
 namespace soak {
 
@@ -19,23 +18,14 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
     resolveClothContacts(device_, view, contactLists_.view(), contactDelta_.data(), s.contactPasses);
     resolveVertexTriangleContacts(device_, view, contactLists_.view(), contactDelta_.data());
   };
+  substepStart_.resize(p.count);
+  substepVelocity_.resize(p.count);
+  velocityFix_.resize(p.count);
+  substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity, s.dt, s.substeps,
+               s.iterations, s.spectralRadius, {substepStart_.data(), substepVelocity_.data(), velocityFix_.data()},
+               contacts);
+  // One sub-step ends with the velocity (x* - x) / dt: nothing to fix.
   substepped_ = s.substeps > 1;
-  if (substepped_) {
-    substepStart_.resize(p.count);
-    substepVelocity_.resize(p.count);
-    velocityFix_.resize(p.count);
-    substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity, s.dt, s.substeps,
-                 s.iterations, s.spectralRadius, {substepStart_.data(), substepVelocity_.data(), velocityFix_.data()},
-                 contacts);
-    return;
-  }
-  moveAttachedVertices(device_, p, c, colliders);
-  cloth.resetMultipliers();
-  solveClothConstraints(device_, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), s.iterations, s.dt);
-  solveClothJacobi(device_, p, c, s.iterations, s.dt, s.spectralRadius);
-  // Colliders first, so that contact sees a layer resting on the floor where it is.
-  projectColliders(device_, p, colliders, colliderCount, s.collisionRadiusScale, s.dt, c.frictionScale);
-  contacts(p);
 }
 
 }  // namespace soak

@@ -1,6 +1,6 @@
 #pragma once
 // The core's cloth.solve stage: the cloth's constraints, colliders and
-// contacts for one step, in one pass or in sub-steps (ClothSolve.h), with
+// contacts for one step, in one or more sub-steps (ClothSolve.h), with
 // the buffers it keeps between steps (the contact candidates, the
 // sub-steps' scratch). Reads and writes the particles' x* through `p`.
 #include "Backend/Buffer.h"

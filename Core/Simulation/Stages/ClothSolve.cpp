@@ -1,5 +1,5 @@
-// cloth.solve: the cloth's constraints, colliders and contact, in one pass or
-// in sub-steps (Cloth/ClothStep.h).
+// cloth.solve: the cloth's constraints, colliders and contact, in one or more
+// sub-steps (Cloth/ClothStep.h).
 #include "Physics/Integrate.h"
 #include "Simulation/Simulation.h"
 #include "Simulation/Stages/CoreStages.h"
