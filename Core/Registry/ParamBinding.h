@@ -82,6 +82,26 @@ class ParamBinding {
     setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.text(name); });
     return *this;
   }
+  // A name that becomes part of file names (ElementDecl::fileSafeName).
+  ParamBinding& fileSafeName(const std::string& name, std::string T::*member, const std::string& desc) {
+    decl_->fileSafeName(name, defaults_.*member, desc);
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.text(name); });
+    return *this;
+  }
+  // A file the run reads, as the scene writes it (ElementParams::resolvePath
+  // makes it a path relative to the scene's folder).
+  ParamBinding& inputFile(const std::string& name, std::string T::*member, const std::string& desc) {
+    decl_->inputFile(name, defaults_.*member, desc);
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.text(name); });
+    return *this;
+  }
+  ParamBinding& integerList(const std::string& name, std::vector<long long> T::*member, const std::string& desc) {
+    std::string def;
+    for (long long v : defaults_.*member) def += (def.empty() ? "" : " ") + std::to_string(v);
+    decl_->integerList(name, def, desc);
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.integerList(name); });
+    return *this;
+  }
   // A choice of named values of an enum (or any comparable type).
   template <class E>
   ParamBinding& choice(const std::string& name, E T::*member, const std::vector<std::pair<std::string, E>>& options,

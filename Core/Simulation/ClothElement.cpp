@@ -1,6 +1,8 @@
 // <Cloth>: a cloth object from an OBJ mesh or a generated rectangular sheet.
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "Base/Error.h"
 #include "Registry/ModuleRegistry.h"
@@ -11,9 +13,11 @@ namespace soak {
 
 namespace {
 
-// What <Cloth> says besides its name, mesh and pins, as the scene writes it
-// (ClothModule turns it into a ClothSpec). The defaults are the scene's.
+// What <Cloth> says, as the scene writes it (ClothModule turns it into a
+// ClothSpec). The defaults are the scene's.
 struct ClothParams {
+  std::string name = "cloth";
+  std::string mesh;  // as written; empty: a generated sheet
   Vec3 translate{0.f, 0.f, 0.f};
   float scale = 1.f;
   Vec3 origin{-0.6f, 1.f, -0.6f};
@@ -29,6 +33,8 @@ struct ClothParams {
   bool stretchLimits = true;
   float stretchStiffness = 1.f, bendStiffness = 0.1f;
   float stretchCompliance = 0.f, bendCompliance = 1.f;
+  std::vector<long long> pin;
+  std::string pinCorners, attachTo;
 };
 
 // Vertex index of a named corner of a generated (cellsU + 1) x (cellsV + 1) sheet.
@@ -48,11 +54,11 @@ class ClothModule : public Module {
     const std::string& where = p_.where();
     const ClothParams& c = c_;
     ClothSpec spec;
-    spec.name = p_.text("name");
+    spec.name = c.name;
     spec.where = where;
     for (const auto& o : sim.cloth.objects())
       if (o.name == spec.name) throw InputError("<Cloth>: a cloth named '" + spec.name + "' already exists", where);
-    const std::string meshFile = p_.text("mesh");
+    const std::string& meshFile = c.mesh;
     const int cellsU = c.cellsU, cellsV = c.cellsV;
     if (meshFile.empty()) {
       sim.checkParticleBudget(double(cellsU + 1) * double(cellsV + 1), "<Cloth>", where);
@@ -89,20 +95,20 @@ class ClothModule : public Module {
       spec.bend.kPrime = perIterationStiffness(c.bendStiffness, iterations);
     }
     const int nv = int(spec.mesh.vertices.size());
-    for (long long v : p_.integerList("pin")) {
+    for (long long v : c.pin) {
       if (v < 0 || v >= nv)
         throw InputError("<Cloth>: pin index " + std::to_string(v) + " out of range (the mesh has " +
                              std::to_string(nv) + " vertices)",
                          where);
       spec.pinned.push_back(int(v));
     }
-    std::istringstream corners(p_.text("pinCorners"));
-    for (std::string c; corners >> c;) {
+    std::istringstream corners(c.pinCorners);
+    for (std::string corner; corners >> corner;) {
       if (!meshFile.empty())
         throw InputError("<Cloth>: pinCorners applies to generated sheets; use pin=\"indices\" with a mesh", where);
-      spec.pinned.push_back(sheetCorner(c, cellsU, cellsV, where));
+      spec.pinned.push_back(sheetCorner(corner, cellsU, cellsV, where));
     }
-    const std::string attach = p_.text("attachTo");
+    const std::string& attach = c.attachTo;
     if (!attach.empty()) {
       for (std::size_t k = 0; k < sim.colliderNames.size(); ++k)
         if (sim.colliderNames[k] == attach) spec.attachCollider = int(k);
@@ -130,12 +136,12 @@ void registerClothElement(ModuleRegistry& r) {
                    "A piece of cloth: a triangle mesh from an OBJ file, or a generated rectangular sheet of "
                    "(cellsU + 1) x (cellsV + 1) vertices. Each vertex is a cloth particle (Section 3.2).",
                    "Cloth");
-  decl.fileSafeName("name", "cloth", "Name (output file cloth_<name>.pvd); unique per scene.")
-      .inputFile("mesh", "", "OBJ file (relative to the scene); empty: a generated sheet.");
   // Each parameter bound to its ClothParams member (Registry/ParamBinding.h).
   ParamBinding<ClothParams> cloth(decl);
   using C = ClothParams;
-  cloth.vector("translate", &C::translate, "m", "Mesh only: translation applied after scaling.")
+  cloth.fileSafeName("name", &C::name, "Name (output file cloth_<name>.pvd); unique per scene.")
+      .inputFile("mesh", &C::mesh, "OBJ file (relative to the scene); empty: a generated sheet.")
+      .vector("translate", &C::translate, "m", "Mesh only: translation applied after scaling.")
       .real("scale", &C::scale, "", "Mesh only: uniform scale.", 0.0, 1e6, true)
       .vector("origin", &C::origin, "m", "Sheet only: corner u0v0.")
       .vector("axisU", &C::axisU, "", "Sheet only: direction of the first side.")
@@ -175,9 +181,9 @@ void registerClothElement(ModuleRegistry& r) {
             "xpbd, chebyshev: compliance of the stretch constraint (0: inextensible).", 0.0, 1e6)
       .real("bendCompliance", &C::bendCompliance, "1/(N m)", "xpbd: compliance of the bending constraint.", 0.0,
             1e6);
-  decl.integerList("pin", "", "Vertex indices held in place (inverse mass 0).")
-      .text("pinCorners", "", "Sheet only: corners held in place, from u0v0 u1v0 u0v1 u1v1.")
-      .text("attachTo", "", "Name of a collider the pinned vertices move with.");
+  cloth.integerList("pin", &C::pin, "Vertex indices held in place (inverse mass 0).")
+      .text("pinCorners", &C::pinCorners, "Sheet only: corners held in place, from u0v0 u1v0 u0v1 u1v1.")
+      .text("attachTo", &C::attachTo, "Name of a collider the pinned vertices move with.");
   r.add(decl.create([cloth](const ElementParams& p) { return std::make_unique<ClothModule>(p, cloth.read(p)); }));
 }
 
