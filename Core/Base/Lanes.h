@@ -88,4 +88,32 @@ SOAK_INLINE bool laneAny(const Lanes& l, bool b) {
 #endif
 }
 
+// Lane `src`'s value, on every lane of the group (every lane must call it).
+template <class T>  // float, int
+SOAK_INLINE T laneFrom(const Lanes& l, T v, int src) {
+#if defined(__CUDA_ARCH__)
+  if (l.size == 1) return v;
+  return __shfl_sync(l.mask, v, src, l.size);
+#else
+  (void)l;
+  (void)src;
+  return v;
+#endif
+}
+
+SOAK_INLINE Vec3 laneFrom(const Lanes& l, Vec3 v, int src) {
+  return Vec3(laneFrom(l, v.x, src), laneFrom(l, v.y, src), laneFrom(l, v.z, src));
+}
+
+// The lowest lane whose vote is set (votes: laneBallot's, not zero).
+SOAK_INLINE int firstVote(unsigned votes) {
+#if defined(__CUDA_ARCH__)
+  return __ffs(votes) - 1;
+#else
+  int k = 0;
+  for (; !(votes & 1u); votes >>= 1) ++k;
+  return k;
+#endif
+}
+
 }  // namespace soak

@@ -86,23 +86,54 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
     const auto ownSurface = [&](int k, int j) {
       return p.phase[j] == p.phase[i] && touchesOneRing(c, vi, c.firstVertexTriangles[k]);
     };
-    // With several lanes, they first look for any triangle of another layer
-    // that would correct the vertex where it is; if none would, neither
-    // would the sequential pass below (its corrections are taken at the
-    // vertex's current position, which then never changes). Corrections
-    // are rare: most vertices stop here. One lane (the CPU) goes straight on.
-    if (lanes.size > 1) {
-      bool due = false;
-      forEachCandidateTriangleNearPath(n, p, v, i, x0, start, lanes, [&](int k, int j) {
-        if (!due) due = !isZero(correction(k, start)) && !ownSurface(k, j);
-      });
-      const bool any = laneAny(lanes, due);
-      if (!lanes.leader()) return;
-      if (!any) {
-        delta[i] = Vec3(0.f, 0.f, 0.f);
-        return;
+    if (lanes.size > 1 && n.lists.listed(v)) {
+      // The sequential pass below, by the group: in rounds, each lane takes
+      // the next candidate in the list and looks for its first triangle
+      // that would correct the vertex where it is now; the lowest lane with
+      // one gives the pass's next correction (every triangle before it was
+      // looked at from the same place and gave none), every lane adds it,
+      // and the next round starts just after it. The same corrections in
+      // the same order as one lane: the same bits. Most vertices get none,
+      // and their pass is one look at each candidate shared by the lanes.
+      const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
+      const Vec3 path = start - x0;
+      const float len2 = lengthSquared(path);
+      const int end = n.lists.start[v] + n.lists.count[v];
+      Vec3 x = start;
+      int next = n.lists.start[v], skip = 0;  // the round's first entry; triangles of it already taken
+      while (next < end) {
+        const int m = next + lanes.index;
+        int hit = -1;
+        Vec3 corr(0.f, 0.f, 0.f);
+        if (m < end) {
+          const int j = n.lists.index[m];
+          if (withinReachOfPath(p.predicted[j].xyz(), x0, path, len2, reach)) {
+            const int vj = p.id[j];
+            const int first = c.firstVertexTriangleStart[vj], last = c.firstVertexTriangleStart[vj + 1];
+            for (int k = first + (lanes.index == 0 ? skip : 0); k < last && hit < 0; ++k) {
+              const Vec3 ck = correction(k, x);
+              if (isZero(ck) || ownSurface(k, j)) continue;
+              hit = k - first;
+              corr = ck;
+            }
+          }
+        }
+        const unsigned votes = laneBallot(lanes, hit >= 0);
+        if (votes == 0u) {
+          next += lanes.size;
+          skip = 0;
+          continue;
+        }
+        const int lane = firstVote(votes);
+        x += laneFrom(lanes, corr, lane);
+        next += lane;
+        skip = laneFrom(lanes, hit, lane) + 1;
       }
+      if (lanes.leader()) delta[i] = x - start;
+      return;
     }
+    // One lane (the CPU), or an item without a list: its leader alone.
+    if (!lanes.leader()) return;
     Vec3 x = start;
     forEachCandidateTriangleNearPath(n, p, v, i, x0, start, Lanes{}, [&](int k, int j) {
       const Vec3 corr = correction(k, x);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 
+#include "Support/FoldedSheet.h"
 #include "Support/TestScenes.h"
 
 using namespace soak;
@@ -160,30 +161,9 @@ TEST(Coupling, WaterDroppedOnPinnedSheetNeverCrossesIt) {
 TEST(Cloth, FoldedSheetFallingOnTheFloorDoesNotPassThroughItself) {
   // A sheet folded in two (layers 3 cm apart) dropped on the floor: every
   // vertex of the upper layer stays above its partner of the lower layer.
-  const int n = 16;
-  const float size = 0.4f, gap = 0.03f, y0 = 0.3f;
-  TriangleMesh m;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= 2 * n; ++i) {
-      const float u = float(i) / n * size;  // 0 .. 2 size; fold at u = size
-      Vec3 p(u, y0, float(j) / n * size);
-      if (i > n) p = Vec3(2.f * size - u, y0 + gap, p.z);
-      else if (i == n) p = Vec3(size + 0.5f * gap, y0 + 0.5f * gap, p.z);
-      m.vertices.push_back(p);
-    }
-  const int row = 2 * n + 1;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < 2 * n; ++i) {
-      const int a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-      m.triangles.push_back({a, b, d});
-      m.triangles.push_back({a, d, c});
-    }
+  const test::FoldedSheet folded;
   const std::string obj = testing::TempDir() + "/folded.obj";
-  {
-    std::ofstream f(obj);
-    for (const Vec3& v : m.vertices) f << "v " << v.x << " " << v.y << " " << v.z << "\n";
-    for (const auto& t : m.triangles) f << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
-  }
+  folded.write(obj);
   // The paper's solver, and the sub-stepped chebyshev solver of the figure
   // scenes (contact after every sub-step).
   const char* solvers[][2] = {{"", ""}, {"clothSubsteps='8' clothIterations='12'", "model='chebyshev'"}};
@@ -195,14 +175,7 @@ TEST(Cloth, FoldedSheetFallingOnTheFloorDoesNotPassThroughItself) {
     float worst = 1e9f;
     for (int s = 0; s < 150; ++s) {
       sim->step();
-      std::vector<Vec3> x = sim->cloth.downloadVertexPositions(sim->particles, 0);
-      // Interior vertices: the free edges and the loop of the fold may droop
-      // past the other layer's edge onto the floor.
-      for (int j = 2; j <= n - 2; ++j)
-        for (int i = 2; i <= n - 4; ++i) {
-          const Vec3 lower = x[j * row + i], upper = x[j * row + (2 * n - i)];
-          worst = std::min(worst, upper.y - lower.y);
-        }
+      worst = std::min(worst, folded.smallestLayerGap(sim->cloth.downloadVertexPositions(sim->particles, 0)));
     }
     std::printf("folded sheet (%s %s): smallest upper-minus-lower layer height %.4f m\n", solver[0], solver[1],
                 worst);
