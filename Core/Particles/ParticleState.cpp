@@ -3,6 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "Base/Unroll.h"
 #include "Backend/ForEachPhased.h"
 #include "Backend/Primitives.h"
 
@@ -191,9 +192,7 @@ void ParticleState::gather(const std::uint32_t* order) {
   auto move = SOAK_LAMBDA(int phase, int i) {
     const int b = phase / 2;
     const bool toScratch = phase % 2 == 0;
-#if defined(__CUDA_ARCH__)
-#pragma unroll
-#endif
+    SOAK_UNROLL
     for (int a = 0; a < kMaxGatherArrays; ++a) {
       if (a >= plan.count || plan.arrays[a].batch != b) continue;
       const GatherArray g = plan.arrays[a];
