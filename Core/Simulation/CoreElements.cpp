@@ -132,30 +132,32 @@ struct ColliderElement {
   std::string name, path, where;
 };
 
-ColliderElement colliderOf(const PlaneParams& p, const std::string& where) {
+// The parts every shape shares: its friction, name and path.
+template <class P>
+ColliderElement colliderBase(const P& p, int shape, const std::string& where) {
   ColliderElement e{Collider{}, p.name, p.path, where};
-  e.collider.shape = kColliderPlane;
+  e.collider.shape = shape;
   e.collider.friction = p.friction;
-  e.collider.a = p.point;
+  return e;
+}
+ColliderElement colliderOf(const PlaneParams& p, const std::string& where) {
+  ColliderElement e = colliderBase(p, kColliderPlane, where);
   if (length(p.normal) < 1e-12f) throw InputError("<Plane>: normal must not be zero", where);
+  e.collider.a = p.point;
   e.collider.b = p.normal / length(p.normal);
   return e;
 }
 ColliderElement colliderOf(const BoxParams& p, const std::string& where) {
-  ColliderElement e{Collider{}, p.name, p.path, where};
-  e.collider.shape = kColliderBox;
-  e.collider.friction = p.friction;
-  e.collider.a = p.min;
-  e.collider.b = p.max;
   if (!(p.max.x > p.min.x && p.max.y > p.min.y && p.max.z > p.min.z))
     throw InputError("<Box>: max must exceed min on every axis", where);
+  ColliderElement e = colliderBase(p, kColliderBox, where);
+  e.collider.a = p.min;
+  e.collider.b = p.max;
   e.collider.inside = p.inside ? 1 : 0;
   return e;
 }
 ColliderElement colliderOf(const SphereParams& p, const std::string& where) {
-  ColliderElement e{Collider{}, p.name, p.path, where};
-  e.collider.shape = kColliderSphere;
-  e.collider.friction = p.friction;
+  ColliderElement e = colliderBase(p, kColliderSphere, where);
   e.collider.a = p.center;
   e.collider.radius = p.radius;
   e.collider.inside = p.inside ? 1 : 0;
