@@ -51,8 +51,11 @@ bool same(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 TEST(ClothContactLists, EveryPairThatEndsAStepTouchingStartedItWithinReach) {
   // For each step: every pair of vertices that are not rest-shape
   // neighbours and end the step within 1.5 contact distances of each other
-  // was within the lists' reach, 3 c + 3 (|v_i| + |v_j|) dt, at the step's
-  // start (c = the thickness here: one cloth).
+  // was within the lists' reach, kContactReachDistances c +
+  // (kContactReachRelative |v_i - v_j| + kContactReachMotion (|v_i| +
+  // |v_j|)) dt, at the step's start (c = the
+  // thickness here: one cloth; the sheet is coarse enough that 3 c is more
+  // than the triangle reach).
   test::TestRegistry reg;
   auto sim = test::makeSimulation(kCrumplingSheet, Device::Cpu, reg);
   const std::vector<Vec3> rest = sim->cloth.downloadVertexPositions(sim->particles, 0);
@@ -71,7 +74,10 @@ TEST(ClothContactLists, EveryPairThatEndsAStepTouchingStartedItWithinReach) {
         if (lengthSquared(rest[a] - rest[b]) < 1.44f * c * c) continue;
         if (lengthSquared(end.x[a] - end.x[b]) >= 2.25f * c * c) continue;
         ++touching;
-        const float reach = 3.f * c + 3.f * (length(start.v[a]) + length(start.v[b])) * dt;
+        const float reach = kContactReachDistances * c +
+                            (kContactReachRelative * length(start.v[a] - start.v[b]) +
+                             kContactReachMotion * (length(start.v[a]) + length(start.v[b]))) *
+                                dt;
         const float d = length(start.x[a] - start.x[b]);
         worst = std::max(worst, double(d / reach));
         ASSERT_LT(d, reach) << "step " << s << ": vertices " << a << " and " << b;
@@ -110,7 +116,10 @@ TEST(ClothContactLists, ListsAreTheGridsCandidatesThatMayTouchAndContactGivesThe
       const int vi = p.id[i], vj = p.id[j];
       const float contact = 0.5f * (c.thickness[vi] + c.thickness[vj]);
       const float triangles = 1.5f * c.maxEdgeLength + 0.5f * c.maxThickness;
-      const float reach = std::max(3.f * contact, triangles) + 3.f * (length(p.velocity[i]) + length(p.velocity[j])) * dt;
+      const float reach = std::max(kContactReachDistances * contact, triangles) +
+                          (kContactReachRelative * length(p.velocity[i] - p.velocity[j]) +
+                           kContactReachMotion * (length(p.velocity[i]) + length(p.velocity[j]))) *
+                              dt;
       if (lengthSquared(p.position[i].xyz() - p.position[j].xyz()) < reach * reach) expected.push_back(j);
     });
     EXPECT_EQ(fromList, expected) << "cloth particle " << v;
