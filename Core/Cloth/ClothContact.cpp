@@ -95,9 +95,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
       // and the next round starts just after it. The same corrections in
       // the same order as one lane: the same bits. Most vertices get none,
       // and their pass is one look at each candidate shared by the lanes.
-      const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
-      const Vec3 path = start - x0;
-      const float len2 = lengthSquared(path);
+      const TrianglePath path(c, x0, start);
       const int end = n.lists.start[v] + n.lists.count[v];
       Vec3 x = start;
       int next = n.lists.start[v], skip = 0;  // the round's first entry; triangles of it already taken
@@ -107,7 +105,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
         Vec3 corr(0.f, 0.f, 0.f);
         if (m < end) {
           const int j = n.lists.index[m];
-          if (withinReachOfPath(p.predicted[j].xyz(), x0, path, len2, reach)) {
+          if (path.near(p.predicted[j].xyz())) {
             const int vj = p.id[j];
             const int first = c.firstVertexTriangleStart[vj], last = c.firstVertexTriangleStart[vj + 1];
             for (int k = first + (lanes.index == 0 ? skip : 0); k < last && hit < 0; ++k) {

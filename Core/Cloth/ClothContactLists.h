@@ -94,6 +94,18 @@ SOAK_INLINE void forEachContactCandidate(const ClothContactView& n, int v, int i
   for (int k = s + lanes.index; k < e; k += lanes.size) f(n.lists.index[k]);
 }
 
+// A vertex's path x0 -> x in the search for triangles: a cloth particle's
+// triangles (those it is the first vertex of) can matter to the vertex if
+// the particle lies within the triangle reach of the path (TriangleCoupling.h).
+struct TrianglePath {
+  Vec3 x0, path;
+  float len2, reach;
+  SOAK_INLINE TrianglePath(const ClothView& c, Vec3 from, Vec3 to)
+      : x0(from), path(to - from), len2(lengthSquared(to - from)),
+        reach(triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness)) {}
+  SOAK_INLINE bool near(Vec3 y) const { return withinReachOfPath(y, x0, path, len2, reach); }
+};
+
 // Calls f(k, j) for the triangles that can matter to item v (its particle
 // slot i) moving from x0 to x (TriangleCoupling.h's forEachTriangleNearPath
 // over the candidates instead of the grid): k is the triangle's place in
@@ -101,12 +113,9 @@ SOAK_INLINE void forEachContactCandidate(const ClothContactView& n, int v, int i
 template <class F>
 SOAK_INLINE void forEachCandidateTriangleNearPath(const ClothContactView& n, const ParticleView& p, int v, int i,
                                                    Vec3 x0, Vec3 x, const Lanes& lanes, F&& f) {
-  const ClothView& c = n.cloth;
-  const float reach = triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness);
-  const Vec3 path = x - x0;
-  const float len2 = lengthSquared(path);
+  const TrianglePath path(n.cloth, x0, x);
   forEachContactCandidate(n, v, i, lanes, [&](int j) {
-    if (withinReachOfPath(p.predicted[j].xyz(), x0, path, len2, reach)) forEachTriangleFirstAt(c, p, j, f);
+    if (path.near(p.predicted[j].xyz())) forEachTriangleFirstAt(n.cloth, p, j, f);
   });
 }
 

@@ -86,22 +86,25 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
   const ClothView c = cloth.view();
   const float h = dt / float(substeps);
   // One sub-step is the step itself: its free motion is the predict stage's
-  // x* as it stands.
-  const bool predictedByStep = substeps == 1;
-  // Non-cloth particles keep their place in the sub-step view.
-  forEach(d, p.count, SOAK_LAMBDA(int i) {
-    s.velocityFix[i] = Vec3(0.f, 0.f, 0.f);
-    s.start[i] = p.position[i];
-  }, "cloth.substep.clear");
-  ParticleView substepView = p;
-  substepView.position = s.start;
-  // The step's free motion x* - x holds gravity over dt; take it out again so
-  // that each sub-step adds its own h of it.
-  forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
-    const int i = c.vertexSlot[v];
-    const Vec3 x = p.position[i].xyz();
-    s.velocity[i] = (p.predicted[i].xyz() - x) * (1.f / dt) - gravity * dt;
-  }, "cloth.substep.begin");
+  // x* as it stands, its start the step's, and it carries no velocity to a
+  // next sub-step nor leaves one to fix.
+  const bool oneSubstep = substeps == 1;
+  ParticleView substepView = p;  // position: the sub-step's start
+  if (!oneSubstep) {
+    // Non-cloth particles keep their place in the sub-step view.
+    forEach(d, p.count, SOAK_LAMBDA(int i) {
+      s.velocityFix[i] = Vec3(0.f, 0.f, 0.f);
+      s.start[i] = p.position[i];
+    }, "cloth.substep.clear");
+    substepView.position = s.start;
+    // The step's free motion x* - x holds gravity over dt; take it out again
+    // so that each sub-step adds its own h of it.
+    forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+      const int i = c.vertexSlot[v];
+      const Vec3 x = p.position[i].xyz();
+      s.velocity[i] = (p.predicted[i].xyz() - x) * (1.f / dt) - gravity * dt;
+    }, "cloth.substep.begin");
+  }
   for (int sub = 0; sub < substeps; ++sub) {
     const float along = float(sub + 1) / float(substeps);
     const bool last = sub + 1 == substeps;
@@ -116,7 +119,7 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
         p.predicted[i] = Float4(last ? target : x.xyz() + (target - x.xyz()) * along, 0.f);
         return;
       }
-      if (predictedByStep) return;
+      if (oneSubstep) return;
       const Vec3 vel = s.velocity[i] + gravity * h;
       s.velocity[i] = vel;
       p.predicted[i] = Float4(s.start[i].xyz() + vel * h, x.w);
@@ -124,7 +127,7 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     cloth.resetMultipliers();
     solveClothConstraints(d, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), iterations, h);
     solveClothJacobi(d, p, c, iterations, h, rho);
-    if (predictedByStep) {
+    if (oneSubstep) {
       // The paper's single pass projects every particle out of the
       // colliders here, the water too (which collide projects again).
       projectColliders(d, p, colliders, colliderCount, collisionRadiusScale, h, c.frictionScale);
@@ -140,6 +143,7 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
       }, "cloth.substep.colliders");
     }
     contacts(substepView);
+    if (oneSubstep) return;
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
       const int i = c.vertexSlot[v];
       const Float4 q = p.predicted[i];

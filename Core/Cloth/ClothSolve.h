@@ -18,7 +18,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
 // radius the Chebyshev weights assume. One dependent phase per iteration.
 void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho);
 
-// Buffers of the cloth sub-steps, per particle slot.
+// Buffers of the cloth sub-steps, per particle slot (one sub-step uses none).
 struct ClothSubstepScratch {
   Float4* start = nullptr;      // position (and inverse mass) at the start of the sub-step
   Vec3* velocity = nullptr;     // velocity through the sub-steps

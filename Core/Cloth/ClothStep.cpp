@@ -18,14 +18,15 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
     resolveClothContacts(device_, view, contactLists_.view(), contactDelta_.data(), s.contactPasses);
     resolveVertexTriangleContacts(device_, view, contactLists_.view(), contactDelta_.data());
   };
-  substepStart_.resize(p.count);
-  substepVelocity_.resize(p.count);
-  velocityFix_.resize(p.count);
+  substepped_ = s.substeps > 1;  // one sub-step ends with the velocity (x* - x) / dt: nothing to fix
+  if (substepped_) {
+    substepStart_.resize(p.count);
+    substepVelocity_.resize(p.count);
+    velocityFix_.resize(p.count);
+  }
   substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity, s.dt, s.substeps,
                s.iterations, s.spectralRadius, {substepStart_.data(), substepVelocity_.data(), velocityFix_.data()},
                contacts);
-  // One sub-step ends with the velocity (x* - x) / dt: nothing to fix.
-  substepped_ = s.substeps > 1;
 }
 
 }  // namespace soak

@@ -79,21 +79,18 @@ class ParamBinding {
   }
   ParamBinding& text(const std::string& name, std::string T::*member, const std::string& desc) {
     decl_->text(name, defaults_.*member, desc);
-    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.text(name); });
-    return *this;
+    return setText(name, member);
   }
   // A name that becomes part of file names (ElementDecl::fileSafeName).
   ParamBinding& fileSafeName(const std::string& name, std::string T::*member, const std::string& desc) {
     decl_->fileSafeName(name, defaults_.*member, desc);
-    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.text(name); });
-    return *this;
+    return setText(name, member);
   }
   // A file the run reads, as the scene writes it (ElementParams::resolvePath
   // makes it a path relative to the scene's folder).
   ParamBinding& inputFile(const std::string& name, std::string T::*member, const std::string& desc) {
     decl_->inputFile(name, defaults_.*member, desc);
-    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.text(name); });
-    return *this;
+    return setText(name, member);
   }
   ParamBinding& integerList(const std::string& name, std::vector<long long> T::*member, const std::string& desc) {
     std::string def;
@@ -133,6 +130,11 @@ class ParamBinding {
   }
 
  private:
+  // The text kinds all fill a string from the element's text.
+  ParamBinding& setText(const std::string& name, std::string T::*member) {
+    setters_.push_back([name, member](const ElementParams& e, T& t) { t.*member = e.text(name); });
+    return *this;
+  }
   ElementDecl* decl_;  // declaring only: the binding may outlive it
   T defaults_{};
   std::vector<std::function<void(const ElementParams&, T&)>> setters_;

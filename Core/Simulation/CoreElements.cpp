@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
-#include <type_traits>
 
 #include "Base/Error.h"
 #include "Base/MessageText.h"
@@ -235,6 +234,14 @@ class ColliderModule : public Module {
 // other elements are checked); as a module it does nothing.
 class NoModule : public Module {};
 
+// friction, name and path: the parameters every collider element has.
+template <class P>
+void bindColliderCommon(ParamBinding<P>& binding) {
+  binding.real("friction", &P::friction, "", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
+      .text("name", &P::name, "Name, for cloth attachTo.")
+      .text("path", &P::path, "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.");
+}
+
 }  // namespace
 
 void registerCoreElements(ModuleRegistry& r) {
@@ -318,13 +325,6 @@ void registerCoreElements(ModuleRegistry& r) {
       return std::make_unique<WaterBlockModule>(block.read(p), p.where());
     }));
   }
-  // friction, name and path of every collider element.
-  const auto common = [](auto& binding, auto* params) {
-    using P = std::remove_pointer_t<decltype(params)>;
-    binding.real("friction", &P::friction, "", "Fraction of tangential motion removed on contact.", 0.0, 1.0)
-        .text("name", &P::name, "Name, for cloth attachTo.")
-        .text("path", &P::path, "Scripted motion: 'time x y z; time x y z; ...' offsets, linear in between.");
-  };
   const auto addCollider = [&r](ElementDecl& decl, auto binding) {
     r.add(decl.create([binding](const ElementParams& p) {
       return std::make_unique<ColliderModule>(colliderOf(binding.read(p), p.where()));
@@ -336,7 +336,7 @@ void registerCoreElements(ModuleRegistry& r) {
     ParamBinding<PlaneParams> plane(decl);
     plane.vector("point", &PlaneParams::point, "m", "A point on the plane.")
         .vector("normal", &PlaneParams::normal, "", "Normal (need not be unit length).");
-    common(plane, static_cast<PlaneParams*>(nullptr));
+    bindColliderCommon(plane);
     addCollider(decl, plane);
   }
   {
@@ -346,7 +346,7 @@ void registerCoreElements(ModuleRegistry& r) {
     box.vector("min", &BoxParams::min, "m", "Lower corner.")
         .vector("max", &BoxParams::max, "m", "Upper corner.")
         .boolean("inside", &BoxParams::inside, "Keep particles inside the box (a tank) instead of outside.");
-    common(box, static_cast<BoxParams*>(nullptr));
+    bindColliderCommon(box);
     addCollider(decl, box);
   }
   {
@@ -356,7 +356,7 @@ void registerCoreElements(ModuleRegistry& r) {
     sphere.vector("center", &SphereParams::center, "m", "Centre.")
         .real("radius", &SphereParams::radius, "m", "Radius.", 0.0, 1e6, true)
         .boolean("inside", &SphereParams::inside, "Keep particles inside the sphere instead of outside.");
-    common(sphere, static_cast<SphereParams*>(nullptr));
+    bindColliderCommon(sphere);
     addCollider(decl, sphere);
   }
   r.add(ElementDecl("Plugin",

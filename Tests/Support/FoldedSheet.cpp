@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <fstream>
 
+#include "Support/TestScenes.h"
+
 namespace soak::test {
 
 void FoldedSheet::write(const std::string& path) const {
@@ -32,6 +34,21 @@ float FoldedSheet::smallestLayerGap(const std::vector<Vec3>& x) const {
       const Vec3 lower = x[std::size_t(j * row + i)], upper = x[std::size_t(j * row + (2 * n - i))];
       worst = std::min(worst, upper.y - lower.y);
     }
+  return worst;
+}
+
+float FoldedSheet::smallestGapWhenDropped(Device device, const std::string& obj, const std::string& simulation,
+                                          const std::string& cloth, int steps) const {
+  write(obj);
+  TestRegistry reg;
+  auto sim = makeSimulation("<Scene><Simulation " + simulation + "/><Cloth name='folded' mesh='" + obj +
+                                "' bendStiffness='0' " + cloth + "/><Plane point='0 0 0' normal='0 1 0'/></Scene>",
+                            device, reg);
+  float worst = 1e9f;
+  for (int s = 0; s < steps; ++s) {
+    sim->step();
+    worst = std::min(worst, smallestLayerGap(sim->cloth.downloadVertexPositions(sim->particles, 0)));
+  }
   return worst;
 }
 

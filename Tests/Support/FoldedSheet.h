@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "Backend/Device.h"
 #include "Base/Vec3.h"
 
 namespace soak::test {
@@ -18,6 +19,11 @@ struct FoldedSheet {
   // lower layer, over the interior (the free edges and the fold's loop may
   // droop past the other layer's edge onto the floor). x: vertex positions.
   float smallestLayerGap(const std::vector<Vec3>& x) const;
+  // Writes the sheet to `obj`, drops it on a floor on `device` with the
+  // given <Simulation> and <Cloth> attributes, and returns the smallest
+  // layer gap over `steps` steps.
+  float smallestGapWhenDropped(Device device, const std::string& obj, const std::string& simulation,
+                               const std::string& cloth, int steps = 150) const;
 };
 
 }  // namespace soak::test

@@ -161,22 +161,12 @@ TEST(Coupling, WaterDroppedOnPinnedSheetNeverCrossesIt) {
 TEST(Cloth, FoldedSheetFallingOnTheFloorDoesNotPassThroughItself) {
   // A sheet folded in two (layers 3 cm apart) dropped on the floor: every
   // vertex of the upper layer stays above its partner of the lower layer.
-  const test::FoldedSheet folded;
-  const std::string obj = testing::TempDir() + "/folded.obj";
-  folded.write(obj);
   // The paper's solver, and the sub-stepped chebyshev solver of the figure
   // scenes (contact after every sub-step).
   const char* solvers[][2] = {{"", ""}, {"clothSubsteps='8' clothIterations='12'", "model='chebyshev'"}};
   for (const auto& solver : solvers) {
-    test::TestRegistry reg;
-    auto sim = scene(std::string("<Simulation ") + solver[0] + "/><Cloth name='folded' mesh='" + obj +
-                         "' bendStiffness='0' " + solver[1] + "/><Plane point='0 0 0' normal='0 1 0'/>",
-                     reg);
-    float worst = 1e9f;
-    for (int s = 0; s < 150; ++s) {
-      sim->step();
-      worst = std::min(worst, folded.smallestLayerGap(sim->cloth.downloadVertexPositions(sim->particles, 0)));
-    }
+    const float worst =
+        test::FoldedSheet{}.smallestGapWhenDropped(Device::Cpu, testing::TempDir() + "/folded.obj", solver[0], solver[1]);
     std::printf("folded sheet (%s %s): smallest upper-minus-lower layer height %.4f m\n", solver[0], solver[1],
                 worst);
     EXPECT_GT(worst, 0.005f) << solver[0] << " " << solver[1];  // half the contact distance (thickness / 2 = 9.4 mm)
