@@ -78,7 +78,8 @@ SOAK_INLINE void addSprings(JacobiSums& sums, const ClothView& c, const Float4* 
 constexpr int kJacobiLanes = 4;
 }  // namespace
 
-void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho) {
+void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho,
+                      const Collider* colliders, int colliderCount, float collisionRadiusScale) {
   const int n = c.jacobiVertexCount;
   if (n == 0 || iterations <= 0) return;
   std::vector<JacobiStage> kinds{kGather};
@@ -116,9 +117,10 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
       switch (launch.kind[local]) {
         case kGather: {
           if (!l.leader()) return;
-          const Float4 y = p.predicted[c.vertexSlot[v]];
+          const int slot = c.vertexSlot[v];
+          const Float4 y = p.predicted[slot];
           out[v] = y;
-          target[v] = y;
+          target[v] = Float4(y.xyz(), collisionRadiusScale * p.radius[slot]);
           return;
         }
         case kBend: {
@@ -154,7 +156,8 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
           // Everything the leader needs after the lane sum, loaded first:
           // the loop's loads then hide their latency.
           const Vec3 xi = xv.xyz();
-          const Vec3 y = target[v].xyz();
+          const Float4 yr = target[v];
+          const Vec3 y = yr.xyz();
           const Vec3 older = out[v].xyz();  // x_{k-1}
           const VertexTethers tethers(c, v, x);
           JacobiSums sums;
@@ -162,6 +165,7 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
           sums.weighted = laneSum(l, sums.weighted);
           sums.weight = laneSum(l, sums.weight);
           if (!l.leader()) return;
+          addColliderTerms(sums, xi, yr.w, colliders, colliderCount);
           Vec3 xhat = jacobiMinimum(sums, y, invH2 / xv.w);
           // Tethers as hard limits on the Jacobi step's result: their pins
           // do not move during the solve, so the projection needs no other

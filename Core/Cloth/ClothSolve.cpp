@@ -82,7 +82,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
 
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
-                  ClothSubstepScratch s, const std::function<void(ParticleView)>& contacts) {
+                  ClothSubstepScratch s, const ClothContactPasses& contacts) {
   const ClothView c = cloth.view();
   const float h = dt / float(substeps);
   // One sub-step is the step itself: its free motion is the predict stage's
@@ -124,9 +124,10 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
       s.velocity[i] = vel;
       p.predicted[i] = Float4(s.start[i].xyz() + vel * h, x.w);
     }, "cloth.substep.predict");
+    if (!oneSubstep) contacts.separate(substepView);
     cloth.resetMultipliers();
     solveClothConstraints(d, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), iterations, h);
-    solveClothJacobi(d, p, c, iterations, h, rho);
+    solveClothJacobi(d, p, c, iterations, h, rho, colliders, colliderCount, collisionRadiusScale);
     if (oneSubstep) {
       // The paper's single pass projects every particle out of the
       // colliders here, the water too (which collide projects again).
@@ -142,7 +143,8 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
             Float4(projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, h, friction), xp.w);
       }, "cloth.substep.colliders");
     }
-    contacts(substepView);
+    if (oneSubstep) contacts.separate(substepView);
+    contacts.uncross(substepView);
     if (oneSubstep) return;
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
       const int i = c.vertexSlot[v];

@@ -16,7 +16,17 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
 // `iterations` Jacobi-Chebyshev iterations (ClothJacobi.h) over the vertices
 // of the chebyshev cloths, for a sub-step of length h; rho is the spectral
 // radius the Chebyshev weights assume. One dependent phase per iteration.
-void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho);
+// The colliders are terms of the energy (ClothJacobi.h, addColliderTerms),
+// with each particle's collision radius times collisionRadiusScale as margin.
+void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho,
+                      const Collider* colliders, int colliderCount, float collisionRadiusScale);
+
+// The cloth contact passes of a (sub-)step, each run with a view whose
+// `position` is the sub-step's start (the x0 of the contact tests).
+struct ClothContactPasses {
+  std::function<void(ParticleView)> separate;  // particle contact: layers pushed apart to their thickness
+  std::function<void(ParticleView)> uncross;   // vertex-triangle contact: no vertex crosses a triangle
+};
 
 // Buffers of the cloth sub-steps, per particle slot (one sub-step uses none).
 struct ClothSubstepScratch {
@@ -28,19 +38,22 @@ struct ClothSubstepScratch {
 // The cloth part of one step in `substeps` sub-steps of h = dt / substeps
 // (Macklin et al. 2019, "Small steps in physics simulation"): each sub-step
 // integrates gravity over h, moves attached vertices along their collider's
-// path, runs `iterations` constraint rounds with time step h and projects the
-// cloth out of the colliders. With one sub-step (the paper's PBD scenes)
-// the free vertices start from the predict stage's x* and every particle is
+// path, separates touching layers (contacts.separate), runs `iterations`
+// constraint rounds with time step h, projects the cloth out of the
+// colliders and keeps vertices from crossing triangles (contacts.uncross).
+// Separating before the solve leaves the solve's result, not a contact
+// push, as the sub-step's shape, and the crossing test stays the last word
+// (Doc/design.md, "Contacts around the solve"). With one sub-step (the
+// paper's PBD scenes) the free vertices start from the predict stage's x*,
+// both contact passes follow the constraints and every particle is
 // projected out of the colliders, as the paper's single pass does. The
 // strain left by too few iterations grows with the step squared, so K
 // sub-steps of n iterations leave far less than one step of K n
-// (Doc/model.md, "Cloth sub-steps"). `contacts` runs after each sub-step's
-// colliders with a view whose `position` is the sub-step's start (the x0 of
-// the contact tests). Writes the cloth's predicted positions and
-// velocityFix, which finalize adds to (x* - x) / dt so that a cloth particle
-// leaves the step with its last sub-step's velocity.
+// (Doc/model.md, "Cloth sub-steps"). Writes the cloth's predicted positions
+// and velocityFix, which finalize adds to (x* - x) / dt so that a cloth
+// particle leaves the step with its last sub-step's velocity.
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
-                  ClothSubstepScratch scratch, const std::function<void(ParticleView)>& contacts);
+                  ClothSubstepScratch scratch, const ClothContactPasses& contacts);
 
 }  // namespace soak

@@ -14,8 +14,11 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   contactDelta_.resize(p.count);
   // The pairs that may touch during the step, once (ClothContactLists.h).
   contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
-  auto contacts = [&](ParticleView view) {
+  ClothContactPasses contacts;
+  contacts.separate = [&](ParticleView view) {
     resolveClothContacts(device_, view, contactLists_.view(), contactDelta_.data(), s.contactPasses);
+  };
+  contacts.uncross = [&](ParticleView view) {
     resolveVertexTriangleContacts(device_, view, contactLists_.view(), contactDelta_.data());
   };
   substepped_ = s.substeps > 1;  // one sub-step ends with the velocity (x* - x) / dt: nothing to fix

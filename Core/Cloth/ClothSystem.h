@@ -115,7 +115,7 @@ struct ClothView {
   const unsigned char* solvedByJacobi = nullptr;  // per vertex: 1 for a chebyshev cloth's vertex
   int jacobiVertexCount = 0;
   Float4* jacobiPrevious = nullptr;  // per vertex: the iterate before the last (Chebyshev)
-  Float4* jacobiTarget = nullptr;    // per vertex: the predicted position y of the sub-step
+  Float4* jacobiTarget = nullptr;    // per vertex: the predicted position y of the sub-step, w its collider margin
   int vertexCount = 0, edgeCount = 0, bendCount = 0, triangleCount = 0;
   float maxEdgeLength = 0.f;  // longest rest edge of any cloth (bounds a triangle's reach from its vertices)
   float maxThickness = 0.f;   // largest thickness of any cloth
