@@ -13,23 +13,29 @@ namespace soak {
 namespace {
 // A vertex's tethers: their lengths and their pins' positions, loaded
 // before they are needed so that the loads overlap other work.
+// Every index into the arrays is a constant (the loops unroll), so they
+// stay in registers instead of the thread's local memory.
 struct VertexTethers {
   int count = 0;
-  float length[kTethers] = {};
+  float length[kTethers];
   Vec3 anchor[kTethers];
   SOAK_INLINE VertexTethers(const ClothView& c, int v, const Float4* at) {
     const TetherPins pins = loadReadOnly(reinterpret_cast<const TetherPins*>(c.tetherPin) + v);
     if (pins.pin[0] < 0) return;
     const TetherLengths lengths = loadReadOnly(reinterpret_cast<const TetherLengths*>(c.tetherLength) + v);
-    for (int t = 0; t < kTethers && pins.pin[t] >= 0; ++t) {
+    SOAK_UNROLL
+    for (int t = 0; t < kTethers; ++t) {
+      const bool has = pins.pin[t] >= 0 && count == t;
       length[t] = lengths.length[t];
-      anchor[t] = at[pins.pin[t]].xyz();
-      count = t + 1;
+      anchor[t] = has ? at[pins.pin[t]].xyz() : Vec3(0.f, 0.f, 0.f);
+      if (has) count = t + 1;
     }
   }
   // x limited by every tether.
   SOAK_INLINE Vec3 clamp(Vec3 x) const {
-    for (int t = 0; t < count; ++t) x = clampToTether(x, anchor[t], length[t]);
+    SOAK_UNROLL
+    for (int t = 0; t < kTethers; ++t)
+      if (t < count) x = clampToTether(x, anchor[t], length[t]);
     return x;
   }
 };
