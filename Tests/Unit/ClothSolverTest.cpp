@@ -146,3 +146,32 @@ TEST(ClothSolvers, ChebyshevHangingSheetComesToRestAtTheDefaultRho) {
   EXPECT_GT(jittering.finalOverPeak, 10 * settled.finalOverPeak);
   EXPECT_LT(settled.worstP99, 0.03);
 }
+
+TEST(ClothSolvers, ChebyshevSheetLandingOnABallStretchesLittle) {
+  // Scenes/small/fig9b_ball_sticky.xml without its water: a 40 x 40 sheet
+  // (0.6 m) dropped 3 cm onto a 0.11 m ball, 8 sub-steps x 12. Its borders
+  // swing down and under the ball at 0.25-0.35 s, the worst frames. The
+  // contacts around the solve (particle contact before it, the colliders
+  // as terms of its energy; Doc/design.md) keep that to a few percent;
+  // with the layers pushed apart and the ball projected only after the
+  // solve, p99 was 13.3 %.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Simulation clothIterations='12' clothSubsteps='8'/>"
+      "<Sphere name='ball' center='0 0.31 0' radius='0.11' friction='0.4'/>"
+      "<Cloth name='sheet' model='chebyshev' origin='-0.3 0.45 -0.3' width='0.6' height='0.6' cellsU='39' "
+      "cellsV='39'/></Scene>",
+      Device::Cpu, reg);
+  double worstMean = 0.0, worstP99 = 0.0;
+  const int steps = int(std::lround(0.45 / sim->settings.timeStep));
+  for (int s = 1; s <= steps; ++s) {
+    sim->step();
+    const StatsRow row = sim->collectStats();
+    worstMean = std::max(worstMean, row.get("strain_mean_sheet"));
+    worstP99 = std::max(worstP99, row.get("strain_p99_sheet"));
+  }
+  std::printf("sheet landing on a ball, 0.45 s: worst per-step strain mean %.2f %%, p99 %.2f %%\n", 100 * worstMean,
+              100 * worstP99);
+  EXPECT_LT(worstP99, 0.08);
+  EXPECT_LT(worstMean, 0.015);
+}
