@@ -80,6 +80,20 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
   forEach(d, vertices, SOAK_LAMBDA(int v) { p.predicted[c.vertexSlot[v]] = x[v]; }, "cloth.constraints.scatter");
 }
 
+namespace {
+// The end of a sub-step for slot i: its velocity from the sub-step's motion,
+// and its x* the next sub-step's start (pinned and attached vertices keep
+// theirs). Run by the next sub-step's predict kernel, or by the finish
+// kernel after the last, rather than as a launch of its own: each reads and
+// writes only slot i.
+SOAK_INLINE void endSubstep(const ParticleView& p, const ClothSubstepScratch& s, int i, float h) {
+  const Float4 q = p.predicted[i];
+  if (q.w == 0.f) return;
+  s.velocity[i] = (q.xyz() - s.start[i].xyz()) * (1.f / h);
+  s.start[i] = q;
+}
+}  // namespace
+
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
                   ClothSubstepScratch s, const ClothContactPasses& contacts) {
@@ -108,8 +122,10 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
   for (int sub = 0; sub < substeps; ++sub) {
     const float along = float(sub + 1) / float(substeps);
     const bool last = sub + 1 == substeps;
+    const bool afterSubstep = sub > 0;  // the sub-step before this one ends here
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
       const int i = c.vertexSlot[v];
+      if (afterSubstep) endSubstep(p, s, i, h);
       const Float4 x = p.position[i];
       if (x.w == 0.f) {
         const int k = c.attachCollider[v];
@@ -146,16 +162,10 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     if (oneSubstep) contacts.separate(substepView);
     contacts.uncross(substepView);
     if (oneSubstep) return;
-    forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
-      const int i = c.vertexSlot[v];
-      const Float4 q = p.predicted[i];
-      if (q.w == 0.f) return;
-      s.velocity[i] = (q.xyz() - s.start[i].xyz()) * (1.f / h);
-      s.start[i] = q;
-    }, "cloth.substep.end");
   }
   forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
     const int i = c.vertexSlot[v];
+    endSubstep(p, s, i, h);
     const Float4 x = p.position[i];
     if (x.w == 0.f) return;
     s.velocityFix[i] = s.velocity[i] - (p.predicted[i].xyz() - x.xyz()) * (1.f / dt);
