@@ -85,7 +85,8 @@ constexpr int kJacobiLanes = 4;
 }  // namespace
 
 void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho,
-                      const Collider* colliders, int colliderCount, float collisionRadiusScale) {
+                      const Collider* colliders, int colliderCount, float collisionRadiusScale,
+                      const Float4* substepStart) {
   const int n = c.jacobiVertexCount;
   if (n == 0 || iterations <= 0) return;
   std::vector<JacobiStage> kinds{kGather};
@@ -186,7 +187,18 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
         case kScatter: {
           if (!l.leader()) return;
           const Float4 xv = x[v];
-          p.predicted[c.vertexSlot[v]] = xv.w == 0.f ? xv : Float4(VertexTethers(c, v, x).clamp(xv.xyz()), xv.w);
+          const int slot = c.vertexSlot[v];
+          if (xv.w == 0.f) {
+            p.predicted[slot] = xv;
+            return;
+          }
+          Vec3 q = VertexTethers(c, v, x).clamp(xv.xyz());
+          // A sub-step's projection out of the colliders, with friction
+          // over the sub-step's motion (here rather than a launch of its own).
+          if (substepStart)
+            q = projectOutOfColliders(colliders, colliderCount, substepStart[slot].xyz(), q, target[v].w, h,
+                                      c.frictionScale ? c.frictionScale[v] : 1.f);
+          p.predicted[slot] = Float4(q, xv.w);
           return;
         }
       }

@@ -143,16 +143,18 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     if (!oneSubstep) contacts.separate(substepView);
     cloth.resetMultipliers();
     solveClothConstraints(d, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), iterations, h);
-    solveClothJacobi(d, p, c, iterations, h, rho, colliders, colliderCount, collisionRadiusScale);
+    solveClothJacobi(d, p, c, iterations, h, rho, colliders, colliderCount, collisionRadiusScale,
+                     oneSubstep ? nullptr : s.start);
     if (oneSubstep) {
       // The paper's single pass projects every particle out of the
       // colliders here, the water too (which collide projects again).
       projectColliders(d, p, colliders, colliderCount, collisionRadiusScale, h, c.frictionScale);
-    } else {
+    } else if (c.jacobiVertexCount < c.vertexCount) {
+      // The chebyshev cloths were projected by their solve's last phase.
       forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
         const int i = c.vertexSlot[v];
         const Float4 xp = p.predicted[i];
-        if (xp.w == 0.f) return;
+        if (xp.w == 0.f || c.solvedByJacobi[v]) return;
         const float r = collisionRadiusScale * p.radius[i];
         const float friction = c.frictionScale ? c.frictionScale[v] : 1.f;
         p.predicted[i] =

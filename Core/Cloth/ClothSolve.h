@@ -18,8 +18,12 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
 // radius the Chebyshev weights assume. One dependent phase per iteration.
 // The colliders are terms of the energy (ClothJacobi.h, addColliderTerms),
 // with each particle's collision radius times collisionRadiusScale as margin.
+// With substepStart (per particle slot, the sub-step's start), the result is
+// then projected out of the colliders with friction over the sub-step's
+// motion from there, as substepCloth does for the other cloths.
 void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho,
-                      const Collider* colliders, int colliderCount, float collisionRadiusScale);
+                      const Collider* colliders, int colliderCount, float collisionRadiusScale,
+                      const Float4* substepStart);
 
 // The cloth contact passes of a (sub-)step, each run with a view whose
 // `position` is the sub-step's start (the x0 of the contact tests).
