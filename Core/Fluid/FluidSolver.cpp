@@ -104,18 +104,20 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
       const Float4 ai = attr[i];
       const float hi = ai.x, mui = ai.y, li = lam[i];
       const float liOverMui = li / mui;
+      SphPairFactors w;
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         if (j == i) return;
         const Float4 aj = attr[j];
         const Vec3 xij = xi - p.predicted[j].xyz();
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, aj.x);
-        if (r2 >= h * h) return;
-        const Vec3 gr = spikyGradient(xij, sqrtf(r2), h);
+        if (h != w.h) w.setFor(h, corrQ);
+        if (r2 >= w.h2) return;
+        const Vec3 gr = w.spikyGradientAt(xij, r2);
         const float muj = aj.y;
         if (aj.w == kFluidWater) {
           // Artificial pressure s_corr = -k (W(r) / W(dq))^4 against clumping.
-          const float ratio = poly6Ratio(r2, h, corrQ);
+          const float ratio = w.poly6RatioAt(r2);
           const float scorr = -corrK * ratio * ratio * ratio * ratio;
           dx += gr * (liOverMui * muj + lam[j] + scorr * muj);
         } else {
@@ -134,12 +136,14 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
       const Vec3 xi = xi4.xyz();
       const Float4 ai = attr[i];
       const float hi = ai.x, psi = ai.z, mui = ai.y;
+      SphPairFactors w;
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         const Vec3 xij = xi - p.predicted[j].xyz();
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, attr[j].x);
-        if (r2 >= h * h) return;
-        dx += spikyGradient(xij, sqrtf(r2), h) * lam[j];
+        if (h != w.h) w.setFor(h, corrQ);
+        if (r2 >= w.h2) return;
+        dx += w.spikyGradientAt(xij, r2) * lam[j];
       });
       dx = laneSum(lanes, dx) * (moveScale * psi / mui);
     }
@@ -205,25 +209,26 @@ void FluidSolver::solve(ParticleState& particles, const FluidContext& f, bool si
       const float hi = ai.x, mui = ai.y;
       float dens = 0.f, sumG2 = 0.f;
       Vec3 gradSelf(0.f, 0.f, 0.f);
+      SphPairFactors w;
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         const Float4 aj = attr[j];
         const Float4 xj = p.predicted[j];
         const Vec3 xij = xi - xj.xyz();
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, aj.x);
-        if (r2 >= h * h) return;
-        const float r = sqrtf(r2);
+        if (h != w.h) w.setFor(h, corrQ);
+        if (r2 >= w.h2) return;
         const float muj = aj.y;
         if (aj.w == kFluidWater) {
-          dens += muj * poly6(r2, h);
+          dens += muj * w.poly6At(r2);
           if (j == i) return;
-          Vec3 gr = spikyGradient(xij, r, h);
+          Vec3 gr = w.spikyGradientAt(xij, r2);
           gradSelf += gr * muj;
           sumG2 += muj * lengthSquared(gr);
         } else {
           const float psi = aj.z;
-          dens += psi * poly6(r2, h);
-          Vec3 gr = spikyGradient(xij, r, h);
+          dens += psi * w.poly6At(r2);
+          Vec3 gr = w.spikyGradientAt(xij, r2);
           gradSelf += gr * psi;
           if (xj.w > 0.f) sumG2 += psi * psi / muj * lengthSquared(gr);
         }

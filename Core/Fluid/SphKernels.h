@@ -38,4 +38,52 @@ SOAK_INLINE float poly6Ratio(float r2, float h, float q) {
   return ratio * ratio * ratio;
 }
 
+// 1 / sqrt(x) for x > 0: the hardware's reciprocal square root on the GPU
+// (one instruction instead of a rounded square root and a division).
+SOAK_INLINE float reciprocalSqrt(float x) {
+#if defined(__CUDA_ARCH__)
+  return rsqrtf(x);
+#else
+  return 1.f / sqrtf(x);
+#endif
+}
+
+// The factors of Poly6, the Spiky gradient and poly6Ratio for one support
+// radius h. The density passes visit pairs that nearly all share one h
+// (the particles of one kind), so a pass keeps the last pair's factors and
+// computes them again only for a pair with another h: each pair then costs
+// multiplications and a reciprocal square root instead of a square root and
+// three divisions (the passes are bound by their instructions, not their
+// loads: Doc/performance.md, "What limits the step").
+struct SphPairFactors {
+  float h = -1.f, h2 = 0.f;
+  float poly6 = 0.f;  // 315 / (64 pi h^9)
+  float spiky = 0.f;  // -45 / (pi h^6)
+  float ratio = 0.f;  // 1 / (h^2 (1 - q^2)), for poly6Ratio at q
+  SOAK_INLINE void setFor(float support, float q) {
+    h = support;
+    h2 = support * support;
+    const float h3 = h2 * support;
+    poly6 = 315.f / (64.f * kPi * h3 * h3 * h3);
+    spiky = -45.f / (kPi * h3 * h3);
+    ratio = 1.f / (h2 * (1.f - q * q));
+  }
+  // For r2 < h2.
+  SOAK_INLINE float poly6At(float r2) const {
+    const float d = h2 - r2;
+    return poly6 * d * d * d;
+  }
+  SOAK_INLINE float poly6RatioAt(float r2) const {
+    const float x = (h2 - r2) * ratio;
+    return x * x * x;
+  }
+  // The Spiky gradient for xij with r2 = |xij|^2 < h2 (0 at r = 0).
+  SOAK_INLINE Vec3 spikyGradientAt(Vec3 xij, float r2) const {
+    if (r2 <= 1e-18f) return Vec3(0.f, 0.f, 0.f);
+    const float invR = reciprocalSqrt(r2);
+    const float d = h - r2 * invR;
+    return xij * (spiky * d * d * invR);
+  }
+};
+
 }  // namespace soak
