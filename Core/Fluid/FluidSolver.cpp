@@ -297,11 +297,13 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
       return;
     }
     Vec3 visc(0.f, 0.f, 0.f), w(0.f, 0.f, 0.f);
+    SphPairFactors factors;
     forEachWaterNeighbour(g, p, i, lanes, [&](int j, Vec3 xij, float r2, float h) {
+      if (h != factors.h) factors.setFor(h, 0.f);
       const float vol = p.mass[j] / maxf(rho[j], 0.5f * rho0);
       const Vec3 vij = p.velocity[j] - vi;
-      visc += vij * (vol * poly6(r2, h));
-      w += cross(vij, spikyGradient(xij, sqrtf(r2), h)) * (-vol);  // curl v (Macklin & Mueller, Eq. 15)
+      visc += vij * (vol * factors.poly6At(r2));
+      w += cross(vij, factors.spikyGradientAt(xij, r2)) * (-vol);  // curl v (Macklin & Mueller, Eq. 15)
     });
     visc = laneSum(lanes, visc);
     w = laneSum(lanes, w);
@@ -314,9 +316,11 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
     forEachLanes(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
       if (!isWater(p.phase[i])) return;
       Vec3 eta(0.f, 0.f, 0.f);
+      SphPairFactors factors;
       forEachWaterNeighbour(g, p, i, lanes, [&](int j, Vec3 xij, float r2, float h) {
+        if (h != factors.h) factors.setFor(h, 0.f);
         const float vol = p.mass[j] / maxf(rho[j], 0.5f * rho0);
-        eta += spikyGradient(xij, sqrtf(r2), h) * (vol * omegaNorm[j]);
+        eta += factors.spikyGradientAt(xij, r2) * (vol * omegaNorm[j]);
       });
       eta = laneSum(lanes, eta);
       if (!lanes.leader()) return;

@@ -49,8 +49,9 @@ SOAK_INLINE float reciprocalSqrt(float x) {
 }
 
 // The factors of Poly6, the Spiky gradient and poly6Ratio for one support
-// radius h. The density passes visit pairs that nearly all share one h
-// (the particles of one kind), so a pass keeps the last pair's factors and
+// radius h. The density passes (and XSPH's and vorticity's) visit pairs
+// that nearly all share one h (the particles of one kind), so a pass keeps
+// the last pair's factors and
 // computes them again only for a pair with another h: each pair then costs
 // multiplications and a reciprocal square root instead of a square root and
 // three divisions (the passes are bound by their instructions, not their
