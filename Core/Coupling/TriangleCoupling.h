@@ -12,10 +12,12 @@ namespace soak {
 // a..c: the triangle's previous and predicted vertices. Returns the
 // displacement that satisfies C >= 0 (zero if the constraint holds or the
 // particle does not pass through the triangle's interior).
-// Whether q (in the triangle's plane) lies in triangle (a, b, c), grown by
-// `margin` in barycentric units. The barycentric coordinates are compared
-// before their division by den > 0 (the same test without two divisions:
-// most triangles a search tests are not hit, and the test is its cost).
+// Whether q's projection onto the triangle's plane lies in triangle (a, b,
+// c), grown by `margin` in barycentric units (the dot products with the
+// edges see only q's part in the plane, so q need not be projected first).
+// The barycentric coordinates are compared before their division by
+// den > 0 (the same test without two divisions: most triangles a search
+// tests are not hit, and the test is its cost).
 SOAK_INLINE bool insideTriangle(Vec3 q, Vec3 a, Vec3 b, Vec3 c, float margin) {
   const Vec3 e0 = b - a, e1 = c - a, e2 = q - a;
   const float d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
@@ -62,26 +64,27 @@ SOAK_INLINE Vec3 triangleCouplingCorrection(Vec3 x0, Vec3 x, const TriangleSnaps
   bool inside;
   if (s1 >= 0.f) {
     // Still on its side, closer than d: where it projects onto the plane.
-    inside = insideTriangle(x - n * dot(x - a, n), a, b, c, 1e-3f);
+    inside = insideTriangle(x, a, b, c, 1e-3f);
   } else {
     // It passed the plane. The constraint applies only if it passed through
     // the triangle: where the path meets the plane, both moving (the cloth
     // moves too, and can sweep through a particle that hardly moved), taken
     // at the fraction t where the signed distance changes sign. A point that
     // went around the triangle's edge crossed the plane outside it and is
-    // left alone (before, any end point projecting inside was put back,
-    // which threw cloth vertices of a curling sheet centimetres). The
+    // left alone (putting back every end point that projects inside would
+    // throw the vertices of a curling sheet centimetres). The
     // triangle is grown by a margin that grows with the depth reached: the
     // path's crossing through a crease between two triangles may fall just
     // outside each.
     const Vec3 b0 = tri.b0(), c0 = tri.c0();
-    const float area2 = length(cross(b - a, c - a));  // as makeTriangleSnapshot found it
     const float t = fabsf(s0) / (fabsf(s0) - s1);
     const Vec3 xt = x0 + (x - x0) * t;
     const Vec3 at = a0 + (a - a0) * t, bt = b0 + (b - b0) * t, ct = c0 + (c - c0) * t;
-    const Vec3 nt = normalizedOrZero(cross(bt - at, ct - at));
-    const float margin = 1e-3f + depthMargin * (-s1) / sqrtf(area2);
-    inside = insideTriangle(xt - nt * dot(xt - at, nt), at, bt, ct, margin);
+    // The margin grows with the depth over the triangle's size (the square
+    // root of twice its area); vertex-triangle contact asks for none.
+    const float margin =
+        depthMargin > 0.f ? 1e-3f + depthMargin * (-s1) / sqrtf(length(cross(b - a, c - a))) : 1e-3f;
+    inside = insideTriangle(xt, at, bt, ct, margin);
   }
   if (!inside) return zero;
   return n * (sigma * -C);
