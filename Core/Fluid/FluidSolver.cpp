@@ -104,20 +104,20 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
       const Float4 ai = attr[i];
       const float hi = ai.x, mui = ai.y, li = lam[i];
       const float liOverMui = li / mui;
-      SphPairFactors w;
+      SphPairFactors kernel;
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         if (j == i) return;
         const Float4 aj = attr[j];
         const Vec3 xij = xi - p.predicted[j].xyz();
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, aj.x);
-        if (h != w.h) w.setFor(h, corrQ);
-        if (r2 >= w.h2) return;
-        const Vec3 gr = w.spikyGradientAt(xij, r2);
+        if (h != kernel.h) kernel.setFor(h, corrQ);
+        if (r2 >= kernel.h2) return;
+        const Vec3 gr = kernel.spikyGradientAt(xij, r2);
         const float muj = aj.y;
         if (aj.w == kFluidWater) {
           // Artificial pressure s_corr = -k (W(r) / W(dq))^4 against clumping.
-          const float ratio = w.poly6RatioAt(r2);
+          const float ratio = kernel.poly6RatioAt(r2);
           const float scorr = -corrK * ratio * ratio * ratio * ratio;
           dx += gr * (liOverMui * muj + lam[j] + scorr * muj);
         } else {
@@ -136,14 +136,14 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
       const Vec3 xi = xi4.xyz();
       const Float4 ai = attr[i];
       const float hi = ai.x, psi = ai.z, mui = ai.y;
-      SphPairFactors w;
+      SphPairFactors kernel;
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         const Vec3 xij = xi - p.predicted[j].xyz();
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, attr[j].x);
-        if (h != w.h) w.setFor(h, corrQ);
-        if (r2 >= w.h2) return;
-        dx += w.spikyGradientAt(xij, r2) * lam[j];
+        if (h != kernel.h) kernel.setFor(h, corrQ);
+        if (r2 >= kernel.h2) return;
+        dx += kernel.spikyGradientAt(xij, r2) * lam[j];
       });
       dx = laneSum(lanes, dx) * (moveScale * psi / mui);
     }
@@ -209,26 +209,26 @@ void FluidSolver::solve(ParticleState& particles, const FluidContext& f, bool si
       const float hi = ai.x, mui = ai.y;
       float dens = 0.f, sumG2 = 0.f;
       Vec3 gradSelf(0.f, 0.f, 0.f);
-      SphPairFactors w;
+      SphPairFactors kernel;
       forEachListedNeighbour(g, i, lanes, [&](int j) {
         const Float4 aj = attr[j];
         const Float4 xj = p.predicted[j];
         const Vec3 xij = xi - xj.xyz();
         const float r2 = lengthSquared(xij);
         const float h = pairSupport(hi, aj.x);
-        if (h != w.h) w.setFor(h, corrQ);
-        if (r2 >= w.h2) return;
+        if (h != kernel.h) kernel.setFor(h, corrQ);
+        if (r2 >= kernel.h2) return;
         const float muj = aj.y;
         if (aj.w == kFluidWater) {
-          dens += muj * w.poly6At(r2);
+          dens += muj * kernel.poly6At(r2);
           if (j == i) return;
-          Vec3 gr = w.spikyGradientAt(xij, r2);
+          Vec3 gr = kernel.spikyGradientAt(xij, r2);
           gradSelf += gr * muj;
           sumG2 += muj * lengthSquared(gr);
         } else {
           const float psi = aj.z;
-          dens += psi * w.poly6At(r2);
-          Vec3 gr = w.spikyGradientAt(xij, r2);
+          dens += psi * kernel.poly6At(r2);
+          Vec3 gr = kernel.spikyGradientAt(xij, r2);
           gradSelf += gr * psi;
           if (xj.w > 0.f) sumG2 += psi * psi / muj * lengthSquared(gr);
         }
@@ -297,13 +297,13 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
       return;
     }
     Vec3 visc(0.f, 0.f, 0.f), w(0.f, 0.f, 0.f);
-    SphPairFactors factors;
+    SphPairFactors kernel;
     forEachWaterNeighbour(g, p, i, lanes, [&](int j, Vec3 xij, float r2, float h) {
-      if (h != factors.h) factors.setFor(h, 0.f);
+      if (h != kernel.h) kernel.setFor(h, 0.f);
       const float vol = p.mass[j] / maxf(rho[j], 0.5f * rho0);
       const Vec3 vij = p.velocity[j] - vi;
-      visc += vij * (vol * factors.poly6At(r2));
-      w += cross(vij, factors.spikyGradientAt(xij, r2)) * (-vol);  // curl v (Macklin & Mueller, Eq. 15)
+      visc += vij * (vol * kernel.poly6At(r2));
+      w += cross(vij, kernel.spikyGradientAt(xij, r2)) * (-vol);  // curl v (Macklin & Mueller, Eq. 15)
     });
     visc = laneSum(lanes, visc);
     w = laneSum(lanes, w);
@@ -316,11 +316,11 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
     forEachLanes(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
       if (!isWater(p.phase[i])) return;
       Vec3 eta(0.f, 0.f, 0.f);
-      SphPairFactors factors;
+      SphPairFactors kernel;
       forEachWaterNeighbour(g, p, i, lanes, [&](int j, Vec3 xij, float r2, float h) {
-        if (h != factors.h) factors.setFor(h, 0.f);
+        if (h != kernel.h) kernel.setFor(h, 0.f);
         const float vol = p.mass[j] / maxf(rho[j], 0.5f * rho0);
-        eta += factors.spikyGradientAt(xij, r2) * (vol * omegaNorm[j]);
+        eta += kernel.spikyGradientAt(xij, r2) * (vol * omegaNorm[j]);
       });
       eta = laneSum(lanes, eta);
       if (!lanes.leader()) return;

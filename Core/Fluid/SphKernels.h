@@ -12,30 +12,31 @@ constexpr float kPi = 3.14159265358979f;
 
 SOAK_INLINE float pairSupport(float hi, float hj) { return 0.5f * (hi + hj); }
 
+// The kernels' normalisations: 315 / (64 pi h^9) of Poly6, -45 / (pi h^6)
+// of the Spiky gradient.
+SOAK_INLINE float poly6Factor(float h) {
+  const float h3 = h * h * h;
+  return 315.f / (64.f * kPi * h3 * h3 * h3);
+}
+SOAK_INLINE float spikyFactor(float h) {
+  const float h3 = h * h * h;
+  return -45.f / (kPi * h3 * h3);
+}
+
 // Poly6: W(r, h) = 315 / (64 pi h^9) (h^2 - r^2)^3 for r < h.
 SOAK_INLINE float poly6(float r2, float h) {
   const float h2 = h * h;
   if (r2 >= h2) return 0.f;
   const float d = h2 - r2;
-  const float h3 = h2 * h;
-  return 315.f / (64.f * kPi * h3 * h3 * h3) * d * d * d;
+  return poly6Factor(h) * d * d * d;
 }
 
 // Spiky gradient with respect to x_i of W(x_i - x_j, h):
 // -45 / (pi h^6) (h - r)^2 (x_i - x_j) / r for 0 < r < h.
 SOAK_INLINE Vec3 spikyGradient(Vec3 xij, float r, float h) {
   if (r >= h || r <= 1e-9f) return Vec3(0.f, 0.f, 0.f);
-  const float h3 = h * h * h;
   const float d = h - r;
-  return xij * (-45.f / (kPi * h3 * h3) * d * d / r);
-}
-
-// W(r, h) / W(q h, h) for Poly6, r < h: ((h^2 - r^2) / (h^2 (1 - q^2)))^3,
-// the normalisation cancelled (one division instead of three).
-SOAK_INLINE float poly6Ratio(float r2, float h, float q) {
-  const float h2 = h * h;
-  const float ratio = (h2 - r2) / (h2 * (1.f - q * q));
-  return ratio * ratio * ratio;
+  return xij * (spikyFactor(h) * d * d / r);
 }
 
 // 1 / sqrt(x) for x > 0: the hardware's reciprocal square root on the GPU
@@ -48,32 +49,31 @@ SOAK_INLINE float reciprocalSqrt(float x) {
 #endif
 }
 
-// The factors of Poly6, the Spiky gradient and poly6Ratio for one support
-// radius h. The density passes (and XSPH's and vorticity's) visit pairs
-// that nearly all share one h (the particles of one kind), so a pass keeps
-// the last pair's factors and
-// computes them again only for a pair with another h: each pair then costs
-// multiplications and a reciprocal square root instead of a square root and
-// three divisions (the passes are bound by their instructions, not their
-// loads: Doc/performance.md, "What limits the step").
+// The kernels for one support radius h, for passes over pairs that nearly
+// all share one h (the particles of one kind): a pass keeps the last pair's
+// factors and computes them again only for a pair with another h, so each
+// pair costs multiplications and a reciprocal square root instead of a
+// square root and three divisions (the passes are bound by their
+// instructions, not their loads: Doc/performance.md, "What limits the step").
 struct SphPairFactors {
   float h = -1.f, h2 = 0.f;
-  float poly6 = 0.f;  // 315 / (64 pi h^9)
-  float spiky = 0.f;  // -45 / (pi h^6)
-  float ratio = 0.f;  // 1 / (h^2 (1 - q^2)), for poly6Ratio at q
+  float poly6 = 0.f;  // poly6Factor(h)
+  float spiky = 0.f;  // spikyFactor(h)
+  float ratio = 0.f;  // 1 / (h^2 (1 - q^2)), for poly6RatioAt
   SOAK_INLINE void setFor(float support, float q) {
     h = support;
     h2 = support * support;
-    const float h3 = h2 * support;
-    poly6 = 315.f / (64.f * kPi * h3 * h3 * h3);
-    spiky = -45.f / (kPi * h3 * h3);
+    poly6 = poly6Factor(support);
+    spiky = spikyFactor(support);
     ratio = 1.f / (h2 * (1.f - q * q));
   }
-  // For r2 < h2.
+  // Poly6 at r2 < h2.
   SOAK_INLINE float poly6At(float r2) const {
     const float d = h2 - r2;
     return poly6 * d * d * d;
   }
+  // W(r, h) / W(q h, h) for Poly6 at r2 < h2, the normalisation cancelled:
+  // ((h^2 - r^2) / (h^2 (1 - q^2)))^3.
   SOAK_INLINE float poly6RatioAt(float r2) const {
     const float x = (h2 - r2) * ratio;
     return x * x * x;
