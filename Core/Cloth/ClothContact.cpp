@@ -7,14 +7,20 @@
 
 namespace soak {
 
-void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta, int passes) {
+void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Float4* scratch, int passes) {
   const ClothSlots cloth = clothSlots(n.cloth);
   const ClothView c = n.cloth;
+  // Each pass reads the cloth's x* from one buffer and writes them to the
+  // other (x* and scratch in turn), so that no launch of its own adds the
+  // corrections: an even number of passes ends in x*.
+  Float4* const own = p.predicted;
   for (int pass = 0; pass < passes; ++pass) {
+    const Float4* in = pass % 2 == 0 ? own : scratch;
+    Float4* out = pass % 2 == 0 ? scratch : own;
     forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
-      const Float4 xi4 = p.predicted[i];
+      const Float4 xi4 = in[i];
       if (xi4.w == 0.f) {
-        if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
+        if (lanes.leader()) out[i] = xi4;
         return;
       }
       const Vec3 xi = xi4.xyz();
@@ -27,7 +33,7 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* de
       forEachContactCandidate(n, v, i, lanes, [&](int j) {
         const int vj = p.id[j];
         const float contact = 0.5f * (thi + c.thickness[vj]);
-        const Float4 xj4 = p.predicted[j];
+        const Float4 xj4 = in[j];
         const Vec3 xij = xi - xj4.xyz();
         // The pair's normal is taken from the positions at the start of the
         // (sub-)step, so a fast layer cannot tunnel through and be pushed out
@@ -44,10 +50,13 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* de
       });
       sum = laneSum(lanes, sum);
       count = laneSum(lanes, count);
-      if (lanes.leader()) delta[i] = count > 0 ? sum / float(count) : Vec3(0.f, 0.f, 0.f);
+      if (!lanes.leader()) return;
+      const Vec3 delta = count > 0 ? sum / float(count) : Vec3(0.f, 0.f, 0.f);
+      out[i] = isZero(delta) ? xi4 : Float4(xi + delta, xi4.w);
     }, "cloth.contact");
-    applyCorrectionsAt(d, p, cloth.slot, cloth.count, delta, "cloth.contact.apply");
   }
+  if (passes % 2 == 1)
+    forEachClothParticle(d, cloth, SOAK_LAMBDA(int i) { own[i] = scratch[i]; }, "cloth.contact.copy");
 }
 
 namespace {
@@ -61,17 +70,14 @@ SOAK_INLINE bool touchesOneRing(const ClothView& c, int v, const ClothTriangle& 
 }
 }  // namespace
 
-void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta) {
+void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n) {
   const ClothView c = n.cloth;
   if (c.triangleCount == 0) return;
   snapshotTriangles(d, p, c);
   const ClothSlots cloth = clothSlots(c);
   forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
     const Float4 xi4 = p.predicted[i];
-    if (xi4.w == 0.f) {
-      if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
-      return;
-    }
+    if (xi4.w == 0.f) return;
     const int vi = p.id[i];
     const Vec3 x0 = p.position[i].xyz(), start = xi4.xyz();
     const float dist = 0.5f * c.thickness[vi];
@@ -80,6 +86,13 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
       const ClothTriangle t = c.firstVertexTriangles[k];
       if (t.v[0] == vi || t.v[1] == vi || t.v[2] == vi) return Vec3(0.f, 0.f, 0.f);
       return triangleCouplingCorrection(x0, x, c.triangleSnapshot[k], dist, 0.f);
+    };
+    // The pass reads no other vertex's x*, only the triangles' snapshot (a
+    // candidate's place too: its first triangle's first vertex), so each
+    // vertex writes its own correction in place.
+    const auto write = [&](Vec3 x) {
+      const Vec3 dx = x - start;
+      if (!isZero(dx)) p.predicted[i] = Float4(start + dx, xi4.w);
     };
     // A triangle that shares a vertex with one of the vertex's own
     // triangles is its own surface, not another layer.
@@ -105,9 +118,9 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
         Vec3 corr(0.f, 0.f, 0.f);
         if (m < end) {
           const int j = n.lists.index[m];
-          if (path.near(p.predicted[j].xyz())) {
-            const int vj = p.id[j];
-            const int first = c.firstVertexTriangleStart[vj], last = c.firstVertexTriangleStart[vj + 1];
+          const int vj = p.id[j];
+          const int first = c.firstVertexTriangleStart[vj], last = c.firstVertexTriangleStart[vj + 1];
+          if (first < last && path.near(c.triangleSnapshot[first].a())) {
             for (int k = first + (lanes.index == 0 ? skip : 0); k < last && hit < 0; ++k) {
               const Vec3 ck = correction(k, x);
               if (isZero(ck) || ownSurface(k, j)) continue;
@@ -127,7 +140,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
         next += lane;
         skip = laneFrom(lanes, hit, lane) + 1;
       }
-      if (lanes.leader()) delta[i] = x - start;
+      if (lanes.leader()) write(x);
       return;
     }
     // One lane (the CPU), or an item without a list: its leader alone.
@@ -138,9 +151,8 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n,
       if (isZero(corr) || ownSurface(k, j)) return;  // the one-ring test only where a correction is due
       x += corr;
     });
-    delta[i] = x - start;
+    write(x);
   }, "cloth.vertexTriangle");
-  applyCorrectionsAt(d, p, cloth.slot, cloth.count, delta, "cloth.vertexTriangle.apply");
 }
 
 }  // namespace soak

@@ -10,8 +10,9 @@
 namespace soak {
 
 // `passes` Jacobi passes over the step's candidate pairs `n`, on `p` (the
-// step's or a cloth sub-step's positions); `delta` is scratch of particle count.
-void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta, int passes);
+// step's or a cloth sub-step's positions); `scratch` holds particle count
+// positions (the passes write x* and scratch in turn).
+void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Float4* scratch, int passes);
 
 // A cloth vertex that would cross a triangle of another layer (another
 // cloth, or a part of its own cloth that shares no vertex with its own
@@ -19,6 +20,6 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Vec3* de
 // the side it came from, thickness / 2 away. Particle contact alone lets a
 // vertex slip between the other layer's vertices when a fold flattens.
 // The triangles come from the step's candidate pairs `n`.
-void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n, Vec3* delta);
+void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n);
 
 }  // namespace soak

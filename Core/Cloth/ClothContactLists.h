@@ -114,8 +114,13 @@ template <class F>
 SOAK_INLINE void forEachCandidateTriangleNearPath(const ClothContactView& n, const ParticleView& p, int v, int i,
                                                    Vec3 x0, Vec3 x, const Lanes& lanes, F&& f) {
   const TrianglePath path(n.cloth, x0, x);
+  // A candidate's place is its first triangle's first vertex in the
+  // snapshot (TriangleSnapshot::a): the pass reads no x* but its own.
+  const ClothView& c = n.cloth;
   forEachContactCandidate(n, v, i, lanes, [&](int j) {
-    if (path.near(p.predicted[j].xyz())) forEachTriangleFirstAt(n.cloth, p, j, f);
+    const int vj = p.id[j], first = c.firstVertexTriangleStart[vj];
+    if (first < c.firstVertexTriangleStart[vj + 1] && path.near(c.triangleSnapshot[first].a()))
+      forEachTriangleFirstAt(c, p, j, f);
   });
 }
 

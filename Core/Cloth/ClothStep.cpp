@@ -6,20 +6,20 @@
 namespace soak {
 
 ClothStep::ClothStep(Device d)
-    : device_(d), contactDelta_(d), contactLists_(d), substepStart_(d), substepVelocity_(d), velocityFix_(d) {}
+    : device_(d), contactScratch_(d), contactLists_(d), substepStart_(d), substepVelocity_(d), velocityFix_(d) {}
 
 void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                     const ClothStepSettings& s) {
   const ClothView c = cloth.view();
-  contactDelta_.resize(p.count);
+  contactScratch_.resize(p.count);
   // The pairs that may touch during the step, once (ClothContactLists.h).
   contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
   ClothContactPasses contacts;
   contacts.separate = [&](ParticleView view) {
-    resolveClothContacts(device_, view, contactLists_.view(), contactDelta_.data(), s.contactPasses);
+    resolveClothContacts(device_, view, contactLists_.view(), contactScratch_.data(), s.contactPasses);
   };
   contacts.uncross = [&](ParticleView view) {
-    resolveVertexTriangleContacts(device_, view, contactLists_.view(), contactDelta_.data());
+    resolveVertexTriangleContacts(device_, view, contactLists_.view());
   };
   substepped_ = s.substeps > 1;  // one sub-step ends with the velocity (x* - x) / dt: nothing to fix
   if (substepped_) {

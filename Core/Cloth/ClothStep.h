@@ -32,7 +32,7 @@ class ClothStep {
 
  private:
   Device device_;
-  Buffer<Vec3> contactDelta_;
+  Buffer<Float4> contactScratch_;  // the particle contact passes' second buffer of x*
   ClothContactLists contactLists_;
   Buffer<Float4> substepStart_;
   Buffer<Vec3> substepVelocity_, velocityFix_;

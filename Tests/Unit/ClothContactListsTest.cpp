@@ -131,15 +131,15 @@ TEST(ClothContactLists, ListsAreTheGridsCandidatesThatMayTouchAndContactGivesThe
   // One contact pass over the lists, and over no lists (every item walks
   // the grid with the same test): the same corrections, bit for bit.
   const std::vector<Float4> before = sim->particles.downloadPredicted();
-  Buffer<Vec3> delta(Device::Cpu);
-  delta.resize(p.count);
-  resolveClothContacts(Device::Cpu, p, lists.view(), delta.data(), 2);
+  Buffer<Float4> scratch(Device::Cpu);
+  scratch.resize(p.count);
+  resolveClothContacts(Device::Cpu, p, lists.view(), scratch.data(), 2);
   const std::vector<Float4> viaLists = sim->particles.downloadPredicted();
   for (int i = 0; i < p.count; ++i) p.predicted[i] = before[i];
   lists.setSizing(PairListSizing{});
   lists.build(p, g, c, dt, false);
   EXPECT_EQ(lists.itemsWithoutList(), cloth.count);
-  resolveClothContacts(Device::Cpu, p, lists.view(), delta.data(), 2);
+  resolveClothContacts(Device::Cpu, p, lists.view(), scratch.data(), 2);
   const std::vector<Float4> viaGrid = sim->particles.downloadPredicted();
   int moved = 0;
   for (int i = 0; i < p.count; ++i) {
