@@ -30,12 +30,30 @@ struct FluidCandidates {
     });
   }
 };
+// A slot is its own key.
+struct SlotKey {
+  SOAK_INLINE int operator()(int i) const { return i; }
+};
 }  // namespace
 
 void FluidNeighbours::build(ParticleView p, GridView g, float skin, bool sizeExactly) {
-  buildPairLists(device_, lists_, p.count, sizeExactly, FluidCandidates{p, g, 1.f + skin}, 1,
-                 "fluid.neighbours.count",
-                 "fluid.neighbours.fill");
+  const FluidCandidates candidates{p, g, 1.f + skin};
+  if (lanesFor(p.count, 1) > 1) {
+    // Slot i's list in room [i K, i K + K), K the mean count of the lists at
+    // the last sizing plus a quarter (PairLists.h, rooms): between
+    // maintenance steps one pass fills them, without counting first, and
+    // keeps the lists in the grid's order; a list longer than K, or of a
+    // slot past the rooms (water added since), goes to the spill. Only
+    // where the lists are built by lane groups (under about a million
+    // particles): built by one thread a particle, at 1M and 4M, the rooms
+    // made fluid.solve 3 % slower (Doc/performance.md).
+    const int keys = sizeExactly || lists_.roomKeys() == 0 ? p.count : lists_.roomKeys();
+    buildKeyedPairLists(device_, lists_, p.count, sizeExactly, candidates, SlotKey{}, keys, 1,
+                        "fluid.neighbours.count", "fluid.neighbours.fill", true);
+  } else {
+    buildPairLists(device_, lists_, p.count, sizeExactly, candidates, 1, "fluid.neighbours.count",
+                   "fluid.neighbours.fill");
+  }
   const PairListView l = lists_.view();
   view_ = {l.start, l.count, l.index, l.capacity, p.phase, p.predicted, g};
 }

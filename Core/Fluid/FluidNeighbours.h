@@ -98,6 +98,8 @@ class FluidNeighbours {
   void setSizing(const FluidListSizing& s) { lists_.setSizing(s); }
   // Particles of the last build without a list (a download; for tests).
   int particlesWithoutList() const { return lists_.itemsWithoutList(); }
+  // The lists as the host sees them (downloads; for tests).
+  std::vector<std::vector<int>> download() const { return lists_.download(); }
 
  private:
   PairLists lists_;

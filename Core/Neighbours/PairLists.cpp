@@ -50,13 +50,14 @@ int* PairLists::roomCountsFor(int keys) {
   return roomCount_.data();
 }
 
-void PairLists::placeRooms() {
+void PairLists::placeRooms(int spillAtLeast) {
   const int keys = int(roomCount_.size()) - 1;
   // Over keys + 1 counts, the last 0: roomStart[keys] is the total.
   const int total = exclusiveScan(device_, roomCount_.data(), roomStart_.data(), keys + 1);
   // The rooms, then the spill (the headroom's eighths of them); the buffer
   // is made again where it is too small or more than twice too large.
-  const std::size_t entries = std::size_t(total) + std::size_t(total) * std::size_t(headroomEighths_) / 8 + 1;
+  const std::size_t entries = std::size_t(total) + std::size_t(total) * std::size_t(headroomEighths_) / 8 +
+                              std::size_t(spillAtLeast) + 1;
   if (entries > index_.size() || 2 * entries < index_.size()) {
     index_ = Buffer<int>(device_);
     index_.resize(entries);
@@ -64,6 +65,9 @@ void PairLists::placeRooms() {
   roomKeys_ = keys;
   roomsEnd_ = total;
 }
+
+int PairLists::countTotal(int n) { return exclusiveScan(device_, count_.data(), start_.data(), n); }
+int PairLists::roomCountTotal(int n) { return exclusiveScan(device_, roomCount_.data(), roomStart_.data(), n); }
 
 void PairLists::clearSpill() {
   if (spillUsed_.size() == 0) spillUsed_.resize(1);
@@ -73,7 +77,7 @@ void PairLists::clearSpill() {
 PairLists::RoomFill PairLists::roomFill() {
   const int capacity = int(index_.size());
   return {roomStart_.data(), start_.data(), count_.data(), index_.data(), capacity, overflow_.data(),
-          roomsEnd_, capacity - roomsEnd_, spillUsed_.data()};
+          roomsEnd_, capacity - roomsEnd_, spillUsed_.data(), roomKeys_};
 }
 
 PairLists::Fill PairLists::fill() {
@@ -100,7 +104,10 @@ void PairLists::setSizing(const PairListSizing& s) {
   overflow_.resize(1);
   overflow_.upload({s.overflowed ? 1 : 0});
   roomKeys_ = 0;
-  if (s.roomStart.size() > 1) {
+  // Rooms past the buffer are dropped: the next build counts and places the
+  // lists as without rooms (a checkpoint's sizing never has them,
+  // getListSizing refuses it).
+  if (s.roomStart.size() > 1 && s.roomStart.back() <= s.capacity) {
     roomStart_.upload(s.roomStart);
     roomCount_.resize(s.roomStart.size());
     roomKeys_ = int(s.roomStart.size()) - 1;

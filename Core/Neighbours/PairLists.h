@@ -20,7 +20,11 @@
 // of the headroom's size: an item that outgrew its room walks its
 // candidates again into room claimed there (by an atomic: the place of its
 // list may change from run to run, not the list), and one that finds the
-// spill full gets no list until the next sizing, as above.
+// spill full gets no list until the next sizing, as above. The fluid's
+// lists key each slot by itself with rooms of one size (the mean count of
+// the items with pairs, plus a quarter): a slot holds another particle
+// after each sort, but about as many pairs, and the lists stay in the
+// grid's order, side by side.
 #include <vector>
 
 #include "Backend/Buffer.h"
@@ -72,8 +76,13 @@ class PairLists {
   // headroom's eighths of it). Before each fill the spill is emptied. The
   // fill then writes each item's list into its key's room or the spill.
   bool hasRooms(int keys) const { return roomKeys_ == keys && keys > 0; }
+  int roomKeys() const { return roomKeys_; }  // keys with a room placed (0: none)
+  // The sum of the n counts just written, and of the first n room sizes
+  // (downloads: sizing steps only).
+  int countTotal(int n);
+  int roomCountTotal(int n);
   int* roomCountsFor(int keys);
-  void placeRooms();
+  void placeRooms(int spillAtLeast = 0);  // the spill: the headroom's eighths of the rooms, and spillAtLeast
   void clearSpill();
   struct RoomFill {
     const int* roomStart;
@@ -84,6 +93,7 @@ class PairLists {
     int* overflow;
     int spillStart, spill;  // the spill area: [spillStart, spillStart + spill)
     int* spillUsed;         // entries of it claimed in this build
+    int keys;               // keys with a room
   };
   RoomFill roomFill();
 

@@ -15,6 +15,8 @@
 // paper scenes: one thread each left most of the GPU idle). The fluid's
 // take 1: groups only where there are few particles; at 1M and more, 4
 // lanes made their build slower (Doc/performance.md).
+#include <cstdint>
+
 #include "Backend/ForEach.h"
 #include "Base/Atomic.h"
 #include "Neighbours/PairLists.h"
@@ -61,9 +63,11 @@ struct FillRooms {
   KeyOf keyOf;
   PairLists::RoomFill t;
   SOAK_INLINE void operator()(int i, const Lanes& lanes) const {
+    // A key past the rooms (an item added since the sizing) has none.
     const int key = keyOf(i);
-    int first = t.roomStart[key];
-    const int room = t.roomStart[key + 1] - first;
+    const bool has = key >= 0 && key < t.keys;
+    int first = has ? t.roomStart[key] : 0;
+    const int room = has ? t.roomStart[key + 1] - first : 0;
     int k = 0;
     candidates(i, lanes, [&](bool keep, int j) {
       const unsigned votes = laneBallot(lanes, keep);
@@ -118,7 +122,8 @@ void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candida
 // that had none, the unkeyed build, which waits for nothing either).
 template <class Candidates, class KeyOf>
 void buildKeyedPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, KeyOf keyOf,
-                         int keys, int minLanes, const char* countName, const char* fillName) {
+                         int keys, int minLanes, const char* countName, const char* fillName,
+                         bool uniformRooms = false) {
   if (!sizeExactly && !lists.hasRooms(keys)) {
     buildPairLists(d, lists, n, false, candidates, minLanes, countName, fillName);
     return;
@@ -129,8 +134,23 @@ void buildKeyedPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Ca
     const detail::CountPairs<Candidates> count{candidates, counts};
     forEachListItem(d, n, lanes, minLanes, count, countName);
     int* room = lists.roomCountsFor(keys);
-    forEach(d, n, SOAK_LAMBDA(int i) { room[keyOf(i)] = detail::roomFor(counts[i]); }, "lists.rooms");
-    lists.placeRooms();
+    if (uniformRooms) {
+      // Every key the same room: the mean count of the items with pairs,
+      // plus a quarter, plus 2.
+      const int total = lists.countTotal(n);
+      forEach(d, n, SOAK_LAMBDA(int i) { room[i] = counts[i] > 0 ? 1 : 0; }, "lists.listing");
+      const int listing = lists.roomCountTotal(n);
+      const int each = listing > 0 ? int((std::int64_t(total) * 5 / 4) / listing) + 2 : 2;
+      // The spill holds at least every list longer than the room, so that a
+      // sizing leaves no item without a list.
+      forEach(d, n, SOAK_LAMBDA(int i) { room[i] = counts[i] > each ? counts[i] : 0; }, "lists.longer");
+      const int longer = lists.roomCountTotal(n);
+      forEach(d, keys, SOAK_LAMBDA(int k) { room[k] = each; }, "lists.rooms");
+      lists.placeRooms(longer);
+    } else {
+      forEach(d, n, SOAK_LAMBDA(int i) { room[keyOf(i)] = detail::roomFor(counts[i]); }, "lists.rooms");
+      lists.placeRooms();
+    }
   }
   lists.clearSpill();
   const detail::FillRooms<Candidates, KeyOf> fill{candidates, keyOf, lists.roomFill()};
