@@ -88,8 +88,8 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n)
       return triangleCouplingCorrection(x0, x, c.triangleSnapshot[k], dist, 0.f);
     };
     // The pass reads no other vertex's x*, only the triangles' snapshot (a
-    // candidate's place too: its first triangle's first vertex), so each
-    // vertex writes its own correction in place.
+    // candidate's place too: TrianglePath::nearTriangles), so each vertex
+    // writes its own correction in place: x* plus the correction x - x*.
     const auto write = [&](Vec3 x) {
       const Vec3 dx = x - start;
       if (!isZero(dx)) p.predicted[i] = Float4(start + dx, xi4.w);
@@ -120,7 +120,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n)
           const int j = n.lists.index[m];
           const int vj = p.id[j];
           const int first = c.firstVertexTriangleStart[vj], last = c.firstVertexTriangleStart[vj + 1];
-          if (first < last && path.near(c.triangleSnapshot[first].a())) {
+          if (path.nearTriangles(c, first, last)) {
             for (int k = first + (lanes.index == 0 ? skip : 0); k < last && hit < 0; ++k) {
               const Vec3 ck = correction(k, x);
               if (isZero(ck) || ownSurface(k, j)) continue;

@@ -104,6 +104,13 @@ struct TrianglePath {
       : x0(from), path(to - from), len2(lengthSquared(to - from)),
         reach(triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness)) {}
   SOAK_INLINE bool near(Vec3 y) const { return withinReachOfPath(y, x0, path, len2, reach); }
+  // Whether the triangles [first, last) of c.firstVertexTriangles, those of
+  // one candidate, can matter: the candidate's place is read from the
+  // snapshot (its first triangle's first vertex, TriangleSnapshot::a), so
+  // the pass reads no x* but its own vertex's.
+  SOAK_INLINE bool nearTriangles(const ClothView& c, int first, int last) const {
+    return first < last && near(c.triangleSnapshot[first].a());
+  }
 };
 
 // Calls f(k, j) for the triangles that can matter to item v (its particle
@@ -114,12 +121,10 @@ template <class F>
 SOAK_INLINE void forEachCandidateTriangleNearPath(const ClothContactView& n, const ParticleView& p, int v, int i,
                                                    Vec3 x0, Vec3 x, const Lanes& lanes, F&& f) {
   const TrianglePath path(n.cloth, x0, x);
-  // A candidate's place is its first triangle's first vertex in the
-  // snapshot (TriangleSnapshot::a): the pass reads no x* but its own.
   const ClothView& c = n.cloth;
   forEachContactCandidate(n, v, i, lanes, [&](int j) {
-    const int vj = p.id[j], first = c.firstVertexTriangleStart[vj];
-    if (first < c.firstVertexTriangleStart[vj + 1] && path.near(c.triangleSnapshot[first].a()))
+    const int vj = p.id[j];
+    if (path.nearTriangles(c, c.firstVertexTriangleStart[vj], c.firstVertexTriangleStart[vj + 1]))
       forEachTriangleFirstAt(c, p, j, f);
   });
 }

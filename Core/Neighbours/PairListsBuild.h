@@ -117,9 +117,11 @@ void buildPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candida
 
 // Keyed lists (PairLists.h, rooms): keyOf(i) gives item i's key in [0,
 // keys), a different one for every item, the same from step to step. On a
-// sizing the items are counted and each key's room placed; between sizings
-// one pass fills the lists into the rooms (without rooms, as after a sizing
-// that had none, the unkeyed build, which waits for nothing either).
+// sizing the items are counted and each key's room placed (with
+// uniformRooms, where keyOf(i) = i, rooms of one size); between sizings one
+// pass fills the lists into the rooms, an item whose key is past them (added
+// since the sizing) into the spill (without rooms, as after a sizing that had
+// none, the unkeyed build, which waits for nothing either).
 template <class Candidates, class KeyOf>
 void buildKeyedPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Candidates candidates, KeyOf keyOf,
                          int keys, int minLanes, const char* countName, const char* fillName,
@@ -135,14 +137,15 @@ void buildKeyedPairLists(Device d, PairLists& lists, int n, bool sizeExactly, Ca
     forEachListItem(d, n, lanes, minLanes, count, countName);
     int* room = lists.roomCountsFor(keys);
     if (uniformRooms) {
-      // Every key the same room: the mean count of the items with pairs,
-      // plus a quarter, plus 2.
+      // Rooms of one size (keyOf(i) = i, and n <= keys at a sizing): the
+      // mean count of the items with pairs, plus a quarter, plus 2, and a
+      // spill that holds at least every list longer than that, so that a
+      // sizing leaves no item without a list. The room sizes serve as
+      // scratch for the two sums read back first.
       const int total = lists.countTotal(n);
       forEach(d, n, SOAK_LAMBDA(int i) { room[i] = counts[i] > 0 ? 1 : 0; }, "lists.listing");
       const int listing = lists.roomCountTotal(n);
       const int each = listing > 0 ? int((std::int64_t(total) * 5 / 4) / listing) + 2 : 2;
-      // The spill holds at least every list longer than the room, so that a
-      // sizing leaves no item without a list.
       forEach(d, n, SOAK_LAMBDA(int i) { room[i] = counts[i] > each ? counts[i] : 0; }, "lists.longer");
       const int longer = lists.roomCountTotal(n);
       forEach(d, keys, SOAK_LAMBDA(int k) { room[k] = each; }, "lists.rooms");
