@@ -2,16 +2,22 @@
 
 #include "Cloth/ClothContact.h"
 #include "Cloth/ClothSolve.h"
+#include "Cloth/CrossingGuard.h"
 
 namespace soak {
 
 ClothStep::ClothStep(Device d)
-    : device_(d), contactScratch_(d), contactLists_(d), substepStart_(d), substepVelocity_(d), velocityFix_(d) {}
+    : device_(d), contactScratch_(d), contactLists_(d), crossingFlag_(d), substepStart_(d), substepVelocity_(d),
+      velocityFix_(d) {}
 
 void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                     const ClothStepSettings& s) {
   const ClothView c = cloth.view();
   contactScratch_.resize(p.count);
+  if (s.crossingGuardRounds > 0 && crossingFlag_.size() != std::size_t(p.count + s.crossingGuardRounds)) {
+    crossingFlag_.resize(std::size_t(p.count + s.crossingGuardRounds));
+    crossingFlag_.fillZero();
+  }
   // The pairs that may touch during the step, once (ClothContactLists.h).
   contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
   ClothContactPasses contacts;
@@ -20,6 +26,7 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   };
   contacts.uncross = [&](ParticleView view) {
     resolveVertexTriangleContacts(device_, view, contactLists_.view());
+    revertNewCrossings(device_, view, contactLists_.view(), crossingFlag_.data(), s.crossingGuardRounds);
   };
   substepped_ = s.substeps > 1;  // one sub-step ends with the velocity (x* - x) / dt: nothing to fix
   if (substepped_) {

@@ -17,6 +17,7 @@ struct ClothStepSettings {
   int iterations = 1;        // Simulation.clothIterations: constraint rounds per (sub-)step
   float spectralRadius = 0;  // Simulation.clothSpectralRadius (chebyshev)
   int contactPasses = 2;     // particle contact passes per (sub-)step
+  int crossingGuardRounds = 0;  // rounds of the crossing guard per (sub-)step (CrossingGuard.h)
   float collisionRadiusScale = 1.f;
   bool sizeLists = false;    // a step that sizes neighbour lists exactly (Simulation::sizeListsNow)
 };
@@ -34,6 +35,7 @@ class ClothStep {
   Device device_;
   Buffer<Float4> contactScratch_;  // the particle contact passes' second buffer of x*
   ClothContactLists contactLists_;
+  Buffer<int> crossingFlag_;  // the crossing guard's flags (CrossingGuard.h), 0 between sub-steps
   Buffer<Float4> substepStart_;
   Buffer<Vec3> substepVelocity_, velocityFix_;
   bool substepped_ = false;

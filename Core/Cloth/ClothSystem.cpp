@@ -7,6 +7,7 @@
 #include "Base/Atomic.h"
 #include "Backend/Primitives.h"
 #include "Cloth/ConstraintColoring.h"
+#include "Cloth/FirstVertexEdges.h"
 
 namespace soak {
 
@@ -14,7 +15,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dMaterialCoord_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dFirstEdgeStart_(device), dFirstEdgeOther_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dMaterialCoord_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -189,6 +190,9 @@ void ClothSystem::upload() {
   dFirstTriStart_.upload(firstStart);
   dFirstTri_.upload(firstList);
   dTriangleSnapshot_.resize(firstList.size());
+  const FirstVertexEdges firstEdges = buildFirstVertexEdges(triangles_, nv);
+  dFirstEdgeStart_.upload(firstEdges.start);
+  dFirstEdgeOther_.upload(firstEdges.other);
   dRest_.upload(restPosition_);
   dMaterialCoord_.upload(materialCoord_);
   dAttach_.upload(attach_);
@@ -273,6 +277,8 @@ ClothView ClothSystem::view() {
   v.firstVertexTriangleStart = dFirstTriStart_.data();
   v.firstVertexTriangles = dFirstTri_.data();
   v.triangleSnapshot = dTriangleSnapshot_.data();
+  v.firstVertexEdgeStart = dFirstEdgeStart_.data();
+  v.firstVertexEdgeOther = dFirstEdgeOther_.data();
   v.restPosition = dRest_.data();
   v.materialCoord = dMaterialCoord_.data();
   v.attachCollider = dAttach_.data();

@@ -82,6 +82,10 @@ struct ClothView {
   const int* firstVertexTriangleStart = nullptr;
   const ClothTriangle* firstVertexTriangles = nullptr;
   TriangleSnapshot* triangleSnapshot = nullptr;  // per firstVertexTriangles entry (see TriangleSnapshot)
+  // The edges whose first (lower) vertex is v (CSR, FirstVertexEdges.h): the
+  // second vertex of each, for the crossing guard (CrossingGuard.h).
+  const int* firstVertexEdgeStart = nullptr;
+  const int* firstVertexEdgeOther = nullptr;
   const Vec3* restPosition = nullptr;  // per vertex, as created
   // Per vertex: material coordinates (u, v, 0): warp along u, weft along v
   // (a sheet's axes in metres, or a mesh's vt; 0 where the mesh has none,
@@ -268,6 +272,7 @@ class ClothSystem {
   Buffer<ClothTriangle> dTriangles_;
   Buffer<int> dTriStart_, dTriList_, dAttach_, dSlot_, dFirstTriStart_;
   Buffer<ClothTriangle> dFirstTri_;
+  Buffer<int> dFirstEdgeStart_, dFirstEdgeOther_;
   Buffer<TriangleSnapshot> dTriangleSnapshot_;
   Buffer<float> dThickness_, dTetherLength_;
   Buffer<int> dTetherPin_;

@@ -37,6 +37,7 @@ struct SimulationSettings {
   float clothSpectralRadius = 0.6f;   // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
   int couplingPasses = 2;      // passes of the water-triangle constraint per step (n_s of Eq. 5 for it)
   int contactPasses = 2;       // passes of cloth contact (self and cloth-cloth) per step
+  int crossingGuardRounds = 0; // rounds of the cloth crossing guard per sub-step (Cloth/CrossingGuard.h)
   Vec3 domainMin{-1e3f, -1e3f, -1e3f};  // water leaving this box is drained
   Vec3 domainMax{1e3f, 1e3f, 1e3f};
   std::optional<WaterSurfaceSettings> surface;  // a water surface mesh per frame where set (<WaterSurface>)

@@ -11,7 +11,7 @@ void runClothSolve(CoreStageState& state, Simulation& sim) {
   const SimulationSettings& set = sim.settings;
   state.cloth.run(sim.particles.view(), sim.cloth, sim.deviceColliders(), int(sim.colliders.size()),
                   {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothIterations, set.clothSpectralRadius,
-                   set.contactPasses, kCollisionRadiusScale, sim.sizeListsNow()});
+                   set.contactPasses, set.crossingGuardRounds, kCollisionRadiusScale, sim.sizeListsNow()});
 }
 
 }  // namespace soak
