@@ -6,13 +6,13 @@
 // `rounds` rounds.
 //
 // Why: the contact passes hold each pair on its side only where they see
-// it in time: particle contact and edge-edge contact before the solve, the
-// vertex-triangle test after it. Where many layers meet at once at several
-// metres a second (fig9's four corners meeting under the ball at about
-// 5 m/s each), the solve and the averaged corrections still let some pass,
-// and a sheet that has passed through itself stays tangled: every test then
+// it: particle contact before the solve, the vertex-triangle test after
+// it. Two free edges that pass each other like the blades of scissors
+// bring no vertex near a triangle or another vertex, so neither sees them
+// (fig9's four corners meeting under the ball at 6-9 m/s relative), and a
+// sheet that has passed through itself stays tangled: every test then
 // holds it on its wrong side (Doc/design.md, "Where fig9's worst strain
-// comes from"). Put back at the start of the sub-step, the five vertices
+// comes from", "The crossing guard"). Put back at the start of the sub-step, the five vertices
 // are where they were not crossed; they lose that sub-step's motion, as an
 // inelastic impact would (the simplest of the fail-safes of Bridson,
 // Fedkiw and Anderson 2002, who stop the vertices of an impact zone
