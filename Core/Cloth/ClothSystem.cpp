@@ -7,7 +7,6 @@
 #include "Base/Atomic.h"
 #include "Backend/Primitives.h"
 #include "Cloth/ConstraintColoring.h"
-#include "Cloth/FirstVertexEdges.h"
 
 namespace soak {
 
@@ -190,9 +189,14 @@ void ClothSystem::upload() {
   dFirstTriStart_.upload(firstStart);
   dFirstTri_.upload(firstList);
   dTriangleSnapshot_.resize(firstList.size());
-  const FirstVertexEdges firstEdges = buildFirstVertexEdges(triangles_, nv);
-  dFirstEdgeStart_.upload(firstEdges.start);
-  dFirstEdgeOther_.upload(firstEdges.other);
+  // edges_ holds each edge once, a < b, in increasing (a, b).
+  std::vector<int> edgeStart(nv + 1, 0), edgeOther(edges_.size());
+  for (const ClothEdge& e : edges_) ++edgeStart[e.a + 1];
+  for (int v = 0; v < nv; ++v) edgeStart[v + 1] += edgeStart[v];
+  std::vector<int> nextEdge(edgeStart.begin(), edgeStart.end() - 1);
+  for (const ClothEdge& e : edges_) edgeOther[nextEdge[e.a]++] = e.b;
+  dFirstEdgeStart_.upload(edgeStart);
+  dFirstEdgeOther_.upload(edgeOther);
   dRest_.upload(restPosition_);
   dMaterialCoord_.upload(materialCoord_);
   dAttach_.upload(attach_);

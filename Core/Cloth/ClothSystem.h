@@ -82,8 +82,8 @@ struct ClothView {
   const int* firstVertexTriangleStart = nullptr;
   const ClothTriangle* firstVertexTriangles = nullptr;
   TriangleSnapshot* triangleSnapshot = nullptr;  // per firstVertexTriangles entry (see TriangleSnapshot)
-  // The edges whose first (lower) vertex is v (CSR, FirstVertexEdges.h): the
-  // second vertex of each, for the crossing guard (CrossingGuard.h).
+  // The edges whose first (lower) vertex is v (CSR): the second vertex of
+  // each, increasing, for the crossing guard (CrossingGuard.h).
   const int* firstVertexEdgeStart = nullptr;
   const int* firstVertexEdgeOther = nullptr;
   const Vec3* restPosition = nullptr;  // per vertex, as created

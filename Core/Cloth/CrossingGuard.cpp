@@ -28,13 +28,7 @@ void revertNewCrossings(Device d, ParticleView p, ClothContactView n, int* flag,
     // The triangles as they are now (and at the sub-step's start): the
     // test below reads one place per triangle and rejects most on their
     // plane alone.
-    forEach(d, c.triangleCount, SOAK_LAMBDA(int k) {
-      if (go && !*go) return;
-      const ClothTriangle t = c.firstVertexTriangles[k];
-      const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
-      c.triangleSnapshot[k] = makeTriangleSnapshot(p.position[sa].xyz(), p.position[sb].xyz(), p.position[sc].xyz(),
-                                                   p.predicted[sa].xyz(), p.predicted[sb].xyz(), p.predicted[sc].xyz());
-    }, "cloth.crossingGuard.snapshot");
+    snapshotTriangles(d, p, c, go);
     // Flags every vertex of a new crossing: each edge is tested from its
     // first vertex against the triangles of that vertex's candidates (each
     // triangle from its first vertex). Flags are only set to 1, so the

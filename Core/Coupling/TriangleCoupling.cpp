@@ -4,8 +4,9 @@
 
 namespace soak {
 
-void snapshotTriangles(Device d, ParticleView p, ClothView c) {
+void snapshotTriangles(Device d, ParticleView p, ClothView c, const int* onlyIf) {
   forEach(d, c.triangleCount, SOAK_LAMBDA(int k) {
+    if (onlyIf && !*onlyIf) return;
     const ClothTriangle t = c.firstVertexTriangles[k];
     const int sa = c.vertexSlot[t.v[0]], sb = c.vertexSlot[t.v[1]], sc = c.vertexSlot[t.v[2]];
     c.triangleSnapshot[k] = makeTriangleSnapshot(p.position[sa].xyz(), p.position[sb].xyz(), p.position[sc].xyz(),

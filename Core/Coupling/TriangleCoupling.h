@@ -148,8 +148,9 @@ SOAK_INLINE void forEachTriangleNearPath(const GridView& g, const ParticleView& 
 }
 
 // Refreshes c.triangleSnapshot from the particles' start-of-step and
-// predicted positions; the searches below read it.
-void snapshotTriangles(Device d, ParticleView p, ClothView c);
+// predicted positions; the searches below read it. With `onlyIf`, a
+// device flag, the launch does nothing unless it is set.
+void snapshotTriangles(Device d, ParticleView p, ClothView c, const int* onlyIf = nullptr);
 
 // One pass of Eq. 21 over all water particles against the triangles of the
 // cloth particles around them. `vertexStiffness` (per cloth vertex, may be
