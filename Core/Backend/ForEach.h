@@ -58,9 +58,14 @@ void forEach(Device device, int n, F f, const char* what = "forEach") {
 // 12.1 with four).
 constexpr int kListLanes = 4;
 
-inline int lanesFor(int n, int minLanes = 1) {
+// The threads a pass's lane groups aim to put in flight, unless the pass
+// names its own target (the fluid's list passes and XSPH aim lower: their
+// loops are short; Doc/performance.md).
+constexpr int kLaneThreads = 1000000;
+
+inline int lanesFor(int n, int minLanes = 1, int threads = kLaneThreads) {
   int lanes = minLanes;
-  while (lanes < 16 && static_cast<long long>(n) * lanes < 1000000LL) lanes *= 2;
+  while (lanes < 16 && static_cast<long long>(n) * lanes < static_cast<long long>(threads)) lanes *= 2;
   return lanes;
 }
 
@@ -92,13 +97,14 @@ __global__ void __launch_bounds__(kForEachBlockSize, minBlocks) soakForEachLanes
 // kForEachBlockSize threads on an SM (for passes whose registers would
 // otherwise cost occupancy; Doc/performance.md).
 template <int minBlocksPerSm = 0, class F>
-void forEachLanes(Device device, int n, F f, const char* what = "forEachLanes", int minLanes = 1) {
+void forEachLanes(Device device, int n, F f, const char* what = "forEachLanes", int minLanes = 1,
+                  int threads = kLaneThreads) {
   if (n <= 0) return;
   countLaunch();
   if (device == Device::Cuda) {
 #if defined(__CUDACC__)
     static_assert(kForEachBlockSize % 32 == 0, "groups must not straddle warps");
-    const int lanes = lanesFor(n, minLanes);
+    const int lanes = lanesFor(n, minLanes, threads);
     int shift = 0;
     while ((1 << shift) < lanes) ++shift;
     const long long threads = static_cast<long long>(n) << shift;
@@ -111,11 +117,13 @@ void forEachLanes(Device device, int n, F f, const char* what = "forEachLanes", 
 #else
     (void)f;
     (void)minLanes;
+    (void)threads;
     throw std::logic_error(std::string(what) +
                            ": this translation unit was not compiled for CUDA (use soak_physics_sources)");
 #endif
   } else {
     (void)minLanes;
+    (void)threads;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; ++i) f(i, Lanes{});
   }

@@ -73,6 +73,14 @@ constexpr float kFluidOther = 0.f, kFluidWater = 1.f, kFluidCloth = 2.f;
 // 4 blocks (32 warps).
 constexpr int kFluidPassBlocks = 5;
 
+// Lane groups of the two list passes: as wide as it takes to put about half
+// a million threads in flight, not a million as for the other passes (their
+// loops are short: about 45 entries a particle). H100, fluid.solve ms at
+// 4 / 8 / 16 lanes: fig9b (99k particles) 1.20 / 1.17 / 1.39, the 100k
+// scale scene 0.905 / 0.96 / 1.16, fig5b (60k) 0.615 / 0.61 / 0.73, fig1
+// (16.5k) 0.38 / 0.275 / 0.235 (Doc/performance.md).
+constexpr int kFluidPassThreads = 500000;
+
 struct CorrectionConstants {
   float rho0, m0, corrK, corrQ, moveScale, dt;
   const Collider* colliders;
@@ -158,7 +166,7 @@ void applyDensityCorrections(Device d, ParticleView p, FluidNeighbourView g, con
                    x.w);
     }
     next[i] = x;
-  }, "fluid.delta", kListLanes);
+  }, "fluid.delta", kListLanes, kFluidPassThreads);
 }
 
 }  // namespace
@@ -246,7 +254,7 @@ void FluidSolver::solve(ParticleState& particles, const FluidContext& f, bool si
       const float C = maxf(rho[i] / rho0 - 1.f, 0.f);  // unilateral: compression only
       const float G = sumG2 + lengthSquared(gradSelf) / mui;
       lam[i] = G + eps > 0.f ? -C * rho0 * rho0 / (G + eps) : 0.f;  // a lone particle: nothing to solve
-    }, "fluid.lambda", kListLanes);
+    }, "fluid.lambda", kListLanes, kFluidPassThreads);
     applyDensityCorrections(device_, p, g, lam, attr, spare, k);
     std::swap(p.predicted, spare);
     g.predicted = p.predicted;
@@ -256,6 +264,12 @@ void FluidSolver::solve(ParticleState& particles, const FluidContext& f, bool si
 }
 
 namespace {
+
+// Lane groups of XSPH's and vorticity's walks of the 27 cells: about a
+// quarter of a million threads. H100, `finalize` ms with groups aimed at 1M
+// / 500k / 250k threads: fig9b 0.28 / 0.214 / 0.187, fig5b 0.164 / 0.164 /
+// 0.120, the 100k scale scene 0.245 / 0.206 / 0.20 (Doc/performance.md).
+constexpr int kGridWalkThreads = 250000;
 
 // Calls f(j, x_ij, r^2, h_ij) for every other water particle j within h_ij of
 // water particle i, at the positions after the step's velocity update.
@@ -311,7 +325,7 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
     vnew[i] = Float4(vi + visc * c, 0.f);  // XSPH
     omega[i] = w;
     omegaNorm[i] = length(w);
-  }, "fluid.xsph");
+  }, "fluid.xsph", 1, kGridWalkThreads);
   if (vort > 0.f) {
     forEachLanes(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
       if (!isWater(p.phase[i])) return;
@@ -328,7 +342,7 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
       // Vorticity confinement force, as acceleration. This pass reads no
       // velocity, so it writes the new one in place (other slots keep theirs).
       p.velocity[i] = vnew[i].xyz() + cross(N, omega[i]) * (vort * dt);
-    }, "fluid.vorticity");
+    }, "fluid.vorticity", 1, kGridWalkThreads);
     return;
   }
   forEach(device_, p.count, SOAK_LAMBDA(int i) { p.velocity[i] = vnew[i].xyz(); }, "fluid.velocity");

@@ -56,4 +56,8 @@ TEST(Lanes, GroupWidthFillsTheGpuAndRespectsTheMinimum) {
   EXPECT_EQ(lanesFor(1 << 20), 1);     // enough threads without sharing
   EXPECT_EQ(lanesFor(10000000, 4), 4); // a minimum is kept
   EXPECT_EQ(lanesFor(100, 32), 32);    // and may exceed 16
+  // A pass may aim at fewer threads (the fluid's list passes: half a million).
+  EXPECT_EQ(lanesFor(98000, 4, 500000), 8);   // fig9b's particles
+  EXPECT_EQ(lanesFor(16500, 4, 500000), 16);  // fig1's
+  EXPECT_EQ(lanesFor(1 << 20, 4, 500000), 4);
 }
