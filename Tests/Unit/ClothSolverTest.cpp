@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "Support/TestScenes.h"
 
@@ -174,6 +177,58 @@ TEST(ClothSolvers, ChebyshevSheetLandingOnABallStretchesLittle) {
               100 * worstP99);
   EXPECT_LT(worstP99, 0.08);
   EXPECT_LT(worstMean, 0.015);
+}
+
+namespace {
+// Scenes/fig7_small.xml (a 50 x 50 sheet, 0.8 m, pinned at its four corners;
+// a block of water lands on it at about 0.15 s) for 1.2 s with the given
+// overrides: the largest per-frame mean and 99th-percentile warp and weft
+// strain, and how far the sheet's lowest vertex hangs below its pins at the
+// end.
+struct PinnedSheet {
+  double worstMean = 0.0, worstP99 = 0.0;
+  float sag = 0.f;
+};
+PinnedSheet waterOnPinnedSheet(const std::vector<std::string>& overrides) {
+  test::TestRegistry reg(SOAK_PLUGIN_DIR);
+  std::ifstream in(std::string(SOAK_SOURCE_DIR) + "/Scenes/fig7_small.xml");
+  const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto sim = test::makeSimulation(xml, Device::Cpu, reg, overrides);
+  PinnedSheet r;
+  const int steps = int(std::lround(1.2 / sim->settings.timeStep));
+  for (int s = 1; s <= steps; ++s) {
+    sim->step();
+    if (s % 2 != 0) continue;
+    const StatsRow row = sim->collectStats();
+    r.worstMean = std::max(r.worstMean, row.get("strain_mean_sheet"));
+    r.worstP99 = std::max(r.worstP99, row.get("strain_p99_sheet"));
+  }
+  const std::vector<Float4> x = sim->particles.downloadPositions();
+  float lowest = 1e9f;
+  for (int slot : sim->cloth.vertexSlots(sim->particles.downloadIds(), sim->particles.downloadPhases()))
+    if (slot >= 0) lowest = std::min(lowest, x[std::size_t(slot)].y);
+  r.sag = 0.5f - lowest;  // the pins are at y = 0.5
+  return r;
+}
+}  // namespace
+
+TEST(ClothSolvers, SheetPinnedAtFourCornersCarriesWaterWithinItsTetherSlack) {
+  // The scene as it is (chebyshev 2 x 25, tethers with 2 % slack) against
+  // the paper's PBD 1 x 8 with 10 % slack. A flat sheet bent into a bowl
+  // must stretch; the tethers bound how much, and the solve must hold the
+  // sheet there while the block lands. Measured (CPU): 4.9 % p99 and 11 cm
+  // of sag against 46 % and 25 cm (Doc/design.md, "Cloth solver").
+  const PinnedSheet scene = waterOnPinnedSheet({});
+  const PinnedSheet paper = waterOnPinnedSheet(
+      {"Cloth.model=pbd", "Simulation.clothSubsteps=1", "Simulation.clothIterations=8", "Cloth.tetherSlack=0.1"});
+  std::printf("water on a sheet pinned at four corners, 1.2 s: chebyshev 2 x 25, 2 %% slack: strain mean %.2f %% "
+              "p99 %.2f %%, sag %.3f m; pbd 1 x 8, 10 %% slack: mean %.2f %% p99 %.2f %%, sag %.3f m\n",
+              100 * scene.worstMean, 100 * scene.worstP99, scene.sag, 100 * paper.worstMean, 100 * paper.worstP99,
+              paper.sag);
+  EXPECT_LT(scene.worstP99, 0.06);
+  EXPECT_LT(scene.worstMean, 0.02);
+  EXPECT_GT(scene.sag, 0.05f);  // it does carry the water in a bowl
+  EXPECT_GT(paper.worstP99, 0.3);
 }
 
 namespace {
