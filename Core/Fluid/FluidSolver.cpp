@@ -266,10 +266,13 @@ void FluidSolver::solve(ParticleState& particles, const FluidContext& f, bool si
 namespace {
 
 // Lane groups of XSPH's and vorticity's walks of the 27 cells: about a
-// quarter of a million threads. H100, `finalize` ms with groups aimed at 1M
-// / 500k / 250k threads: fig9b 0.28 / 0.214 / 0.187, fig5b 0.164 / 0.164 /
-// 0.120, the 100k scale scene 0.245 / 0.206 / 0.20 (Doc/performance.md).
+// quarter of a million threads, and at least 2 lanes. H100, `finalize` ms
+// with groups aimed at 1M / 500k / 250k threads: fig9b 0.28 / 0.214 /
+// 0.187, fig5b 0.164 / 0.164 / 0.120, the 100k scale scene 0.245 / 0.206 /
+// 0.20; at 1M particles with 1 / 2 / 4 lanes 2.47 / 2.28 / 2.30, at 4M
+// 10.35 / 10.04 / 10.54 (Doc/performance.md).
 constexpr int kGridWalkThreads = 250000;
+constexpr int kGridWalkMinLanes = 2;
 
 // Calls f(j, x_ij, r^2, h_ij) for every other water particle j within h_ij of
 // water particle i, at the positions after the step's velocity update.
@@ -325,7 +328,7 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
     vnew[i] = Float4(vi + visc * c, 0.f);  // XSPH
     omega[i] = w;
     omegaNorm[i] = length(w);
-  }, "fluid.xsph", 1, kGridWalkThreads);
+  }, "fluid.xsph", kGridWalkMinLanes, kGridWalkThreads);
   if (vort > 0.f) {
     forEachLanes(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
       if (!isWater(p.phase[i])) return;
@@ -342,7 +345,7 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
       // Vorticity confinement force, as acceleration. This pass reads no
       // velocity, so it writes the new one in place (other slots keep theirs).
       p.velocity[i] = vnew[i].xyz() + cross(N, omega[i]) * (vort * dt);
-    }, "fluid.vorticity", 1, kGridWalkThreads);
+    }, "fluid.vorticity", kGridWalkMinLanes, kGridWalkThreads);
     return;
   }
   forEach(device_, p.count, SOAK_LAMBDA(int i) { p.velocity[i] = vnew[i].xyz(); }, "fluid.velocity");
