@@ -73,13 +73,14 @@ constexpr float kFluidOther = 0.f, kFluidWater = 1.f, kFluidCloth = 2.f;
 // 4 blocks (32 warps).
 constexpr int kFluidPassBlocks = 5;
 
-// Lane groups of the two list passes: as wide as it takes to put about half
-// a million threads in flight, not a million as for the other passes (their
-// loops are short: about 45 entries a particle). H100, fluid.solve ms at
+// Lane groups of the two list passes: as wide as it takes to put about 400k
+// threads in flight, not a million as for the other passes (their loops are
+// short: about 45 entries a particle); 8 lanes for fig5b's 60k particles and
+// fig9b's 99k, 4 for the 100k scale scene's. H100, fluid.solve ms at
 // 4 / 8 / 16 lanes: fig9b (99k particles) 1.20 / 1.17 / 1.39, the 100k
 // scale scene 0.905 / 0.96 / 1.16, fig5b (60k) 0.615 / 0.61 / 0.73, fig1
 // (16.5k) 0.38 / 0.275 / 0.235 (Doc/performance.md).
-constexpr int kFluidPassThreads = 500000;
+constexpr int kFluidPassThreads = 400000;
 
 struct CorrectionConstants {
   float rho0, m0, corrK, corrQ, moveScale, dt;

@@ -56,8 +56,10 @@ TEST(Lanes, GroupWidthFillsTheGpuAndRespectsTheMinimum) {
   EXPECT_EQ(lanesFor(1 << 20), 1);     // enough threads without sharing
   EXPECT_EQ(lanesFor(10000000, 4), 4); // a minimum is kept
   EXPECT_EQ(lanesFor(100, 32), 32);    // and may exceed 16
-  // A pass may aim at fewer threads (the fluid's list passes: half a million).
-  EXPECT_EQ(lanesFor(98000, 4, 500000), 8);   // fig9b's particles
-  EXPECT_EQ(lanesFor(16500, 4, 500000), 16);  // fig1's
-  EXPECT_EQ(lanesFor(1 << 20, 4, 500000), 4);
+  // A pass may aim at fewer threads (the fluid's list passes: 400k).
+  EXPECT_EQ(lanesFor(98000, 4, 400000), 8);   // fig9b's particles
+  EXPECT_EQ(lanesFor(60400, 4, 400000), 8);   // fig5b's
+  EXPECT_EQ(lanesFor(100200, 4, 400000), 4);  // the 100k scale scene's
+  EXPECT_EQ(lanesFor(16500, 4, 400000), 16);  // fig1's
+  EXPECT_EQ(lanesFor(1 << 20, 4, 400000), 4);
 }
