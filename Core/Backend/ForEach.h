@@ -107,8 +107,8 @@ void forEachLanes(Device device, int n, F f, const char* what = "forEachLanes", 
     const int lanes = lanesFor(n, minLanes, threads);
     int shift = 0;
     while ((1 << shift) < lanes) ++shift;
-    const long long threads = static_cast<long long>(n) << shift;
-    const int blocks = static_cast<int>((threads + kForEachBlockSize - 1) / kForEachBlockSize);
+    const long long launched = static_cast<long long>(n) << shift;
+    const int blocks = static_cast<int>((launched + kForEachBlockSize - 1) / kForEachBlockSize);
     if constexpr (minBlocksPerSm > 0)
       soakForEachLanesKernelBounded<minBlocksPerSm><<<blocks, kForEachBlockSize>>>(n, shift, f);
     else
