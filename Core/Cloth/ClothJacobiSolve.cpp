@@ -146,8 +146,10 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
                 q[a] = xa.xyz();
                 w[a] = xa.w;
               }
+              float kPrime = loadReadOnly(c.jacobiBendStiffness + ref.bend);
+              if (c.bendExponent != 1.f) kPrime = 1.f - powf(1.f - kPrime, c.bendExponent);
               addBendCorrection(sum, count, q, w, ref.role, loadReadOnly(c.jacobiBendRest + ref.bend),
-                                loadReadOnly(c.jacobiBendStiffness + ref.bend) * bendScaleOf(c.bendScale, bend.v));
+                                kPrime * bendScaleOf(c.bendScale, bend.v));
             }
           sum = laneSum(l, sum);
           count = laneSum(l, count);

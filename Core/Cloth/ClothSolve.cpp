@@ -96,8 +96,9 @@ SOAK_INLINE void endSubstep(const ParticleView& p, const ClothSubstepScratch& s,
 
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
-                  ClothSubstepScratch s, const ClothContactPasses& contacts) {
-  const ClothView c = cloth.view();
+                  float bendExponent, ClothSubstepScratch s, const ClothContactPasses& contacts) {
+  ClothView c = cloth.view();
+  c.bendExponent = bendExponent;
   const float h = dt / float(substeps);
   // One sub-step is the step itself: its free motion is the predict stage's
   // x* as it stands, its start the step's, and it carries no velocity to a

@@ -55,9 +55,10 @@ struct ClothSubstepScratch {
 // sub-steps of n iterations leave far less than one step of K n
 // (Doc/model.md, "Cloth sub-steps"). Writes the cloth's predicted positions
 // and velocityFix, which finalize adds to (x* - x) / dt so that a cloth
-// particle leaves the step with its last sub-step's velocity.
+// particle leaves the step with its last sub-step's velocity. bendExponent:
+// ClothView::bendExponent (1 where the step takes the configured sub-steps).
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
-                  ClothSubstepScratch scratch, const ClothContactPasses& contacts);
+                  float bendExponent, ClothSubstepScratch scratch, const ClothContactPasses& contacts);
 
 }  // namespace soak

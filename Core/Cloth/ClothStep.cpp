@@ -1,5 +1,6 @@
 #include "Cloth/ClothStep.h"
 
+#include "Cloth/AdaptiveSubsteps.h"
 #include "Cloth/ClothContact.h"
 #include "Cloth/ClothSolve.h"
 #include "Cloth/CrossingGuard.h"
@@ -8,11 +9,19 @@ namespace soak {
 
 ClothStep::ClothStep(Device d)
     : device_(d), contactScratch_(d), contactLists_(d), crossingFlag_(d), substepStart_(d), substepVelocity_(d),
-      velocityFix_(d) {}
+      velocityFix_(d), vertexTravel_(d) {}
 
 void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                     const ClothStepSettings& s) {
   const ClothView c = cloth.view();
+  int substeps = s.substeps;
+  if (s.substepTravel > 0.f) {
+    vertexTravel_.resize(std::size_t(c.vertexCount));
+    const float perStep = clothTravelPerStep(device_, p, c, s.dt, vertexTravel_.data());
+    substeps = substepsForTravel(perStep, s.substepTravel, s.substeps, s.maxSubsteps);
+  }
+  lastSubsteps_ = substeps;
+  phasesTaken_ += cloth.constraintPhasesPerStep(s.iterations, substeps);
   contactScratch_.resize(p.count);
   if (s.crossingGuardRounds > 0 && crossingFlag_.size() != std::size_t(p.count + s.crossingGuardRounds)) {
     crossingFlag_.resize(std::size_t(p.count + s.crossingGuardRounds));
@@ -28,15 +37,15 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
     resolveVertexTriangleContacts(device_, view, contactLists_.view());
     revertNewCrossings(device_, view, contactLists_.view(), crossingFlag_.data(), s.crossingGuardRounds);
   };
-  substepped_ = s.substeps > 1;  // one sub-step ends with the velocity (x* - x) / dt: nothing to fix
+  substepped_ = substeps > 1;  // one sub-step ends with the velocity (x* - x) / dt: nothing to fix
   if (substepped_) {
     substepStart_.resize(p.count);
     substepVelocity_.resize(p.count);
     velocityFix_.resize(p.count);
   }
-  substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity, s.dt, s.substeps,
-               s.iterations, s.spectralRadius, {substepStart_.data(), substepVelocity_.data(), velocityFix_.data()},
-               contacts);
+  substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity, s.dt, substeps,
+               s.iterations, s.spectralRadius, float(s.substeps) / float(substeps),
+               {substepStart_.data(), substepVelocity_.data(), velocityFix_.data()}, contacts);
 }
 
 }  // namespace soak

@@ -13,7 +13,9 @@ namespace soak {
 struct ClothStepSettings {
   float dt = 0.f;
   Vec3 gravity;
-  int substeps = 1;          // Simulation.clothSubsteps
+  int substeps = 1;          // Simulation.clothSubsteps (the fewest, with substepTravel)
+  float substepTravel = 0.f; // Simulation.clothSubstepTravel: > 0, sub-steps from the speed (AdaptiveSubsteps.h)
+  int maxSubsteps = 1;       // Simulation.clothMaxSubsteps
   int iterations = 1;        // Simulation.clothIterations: constraint rounds per (sub-)step
   float spectralRadius = 0;  // Simulation.clothSpectralRadius (chebyshev)
   int contactPasses = 2;     // particle contact passes per (sub-)step
@@ -30,6 +32,10 @@ class ClothStep {
   // After a sub-stepped run: per slot, the velocity the last sub-step left
   // minus (x* - x) / dt, which finalize adds (ClothSolve.h); else null.
   const Vec3* velocityFix() const { return substepped_ ? velocityFix_.data() : nullptr; }
+  // Sub-steps the last run took, and the dependent constraint phases of all
+  // runs together (ClothSystem::constraintPhasesPerStep).
+  int lastSubsteps() const { return lastSubsteps_; }
+  long long phasesTaken() const { return phasesTaken_; }
 
  private:
   Device device_;
@@ -38,7 +44,10 @@ class ClothStep {
   Buffer<int> crossingFlag_;  // the crossing guard's flags (CrossingGuard.h), 0 between sub-steps
   Buffer<Float4> substepStart_;
   Buffer<Vec3> substepVelocity_, velocityFix_;
+  Buffer<float> vertexTravel_;  // per vertex, AdaptiveSubsteps.h
   bool substepped_ = false;
+  int lastSubsteps_ = 0;
+  long long phasesTaken_ = 0;
 };
 
 }  // namespace soak

@@ -21,6 +21,7 @@ struct FrameData {
   std::vector<std::vector<float>> channels;  // ParticleState's channels, by index
   // Water budget (Simulation::drainedWaterMass, emittedWaterMass).
   double drainedWaterMass = 0.0, emittedWaterMass = 0.0;
+  int clothSubsteps = 0;  // cloth sub-steps of the step before the frame (0 before the first)
 
   // What one module asked to be copied with the frame
   // (Module::statsSources), in the order it asked.

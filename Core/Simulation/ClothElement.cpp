@@ -82,6 +82,11 @@ class ClothModule : public Module {
     // Eq. 5 over all the rounds of a step, so that sub-steps keep the stiffness per step.
     const int iterations = sim.settings.clothIterations * sim.settings.clothSubsteps;
     spec.model = c.model;
+    if (c.model == ClothModel::Pbd && sim.settings.clothSubstepTravel > 0.f)
+      throw InputError("<Cloth model=\"pbd\">: Simulation.clothSubstepTravel needs a chebyshev or xpbd cloth "
+                       "(pbd's stiffness is set per iteration for a fixed number of sub-steps); for pbd add "
+                       "--set Simulation.clothSubstepTravel=0",
+                       where);
     if (c.model == ClothModel::Chebyshev) {
       spec.stretchStiffness = stiffnessFromCompliance(c.stretchCompliance);
       // Bending: one projection pass per sub-step (Cloth/ClothJacobi.h).

@@ -27,6 +27,7 @@ FrameCopy startFrameCopy(Simulation& sim, DownloadQueue& queue) {
   c.scalars.time = sim.time();
   c.scalars.drainedWaterMass = sim.drainedWaterMass;
   c.scalars.emittedWaterMass = sim.emittedWaterMass;
+  c.scalars.clothSubsteps = sim.lastClothSubsteps();
   ParticleState& ps = sim.particles;
   const ParticleView p = ps.view();
   c.count = p.count;
@@ -120,6 +121,7 @@ StatsRow frameStats(const Simulation& sim, const FrameData& frame) {
   } else {
     const std::vector<int> slots = cloth.vertexSlots(frame.id, frame.phase);
     row.add("max_stretch", double(cloth.maxStretch(frame.position, slots)));
+    row.add("cloth_substeps", double(frame.clothSubsteps));
     // Edge strain per cloth (ClothSystem::strain): warp and weft edges of a sheet, all edges of a mesh.
     const std::vector<ClothStrain> strain = cloth.strain(frame.position, slots);
     for (std::size_t k = 0; k < strain.size(); ++k) {

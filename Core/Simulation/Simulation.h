@@ -103,6 +103,11 @@ class Simulation final : public CheckpointState, public FrameSource {
 
   long long stepIndex() const { return stepIndex_; }
   double time() const { return time_; }
+  // Cloth sub-steps of the last step, and dependent cloth constraint phases
+  // of all steps of this object (Simulation.clothSubstepTravel makes both
+  // vary; Cloth/AdaptiveSubsteps.h).
+  int lastClothSubsteps() const { return stages_.cloth.lastSubsteps(); }
+  long long clothPhasesTaken() const { return stages_.cloth.phasesTaken(); }
   // Largest support radius of any particle (cell size of the grid). Modules
   // that add particles with a larger radius must raise it.
   float maxSupportRadius() const { return maxSupportRadius_; }

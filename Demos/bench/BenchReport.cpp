@@ -83,7 +83,7 @@ void printTable(const std::vector<Result>& results, const std::string& deviceTex
     for (const StageRow& s : r.stages)
       if (s.name == "cloth.solve") solveMs = s.ms;
     if (r.cloth > 0)
-      std::printf("| %s | %d | %.3f | %.3f | %.2f |\n", r.c.name.c_str(), r.clothPhases, solveMs, 100.0 * r.strainMean,
+      std::printf("| %s | %.1f | %.3f | %.3f | %.2f |\n", r.c.name.c_str(), r.clothPhases, solveMs, 100.0 * r.strainMean,
                   100.0 * r.strainP99);
   }
   printStageTable(results, "per-stage ms per step (profiled)", "%.3f", &StageRow::ms);

@@ -158,6 +158,7 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
   const double waterBefore = sim.collectStats().get("water_particles");
   synchronize(device);
   const unsigned long long waitsBefore = hostWaits(), launchesBefore = launches();
+  const long long phasesBefore = sim.clothPhasesTaken();
   const double t0 = nowMs();
   for (int s = 0; s < steps; ++s) sim.step(false);
   synchronize(device);
@@ -165,6 +166,7 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
   r.waitsPerStep = double(hostWaits() - waitsBefore - 1) / steps;
   r.launchesPerStep = double(launches() - launchesBefore) / steps;
   const double waterAfter = sim.collectStats().get("water_particles");
+  const double phasesPerStep = double(sim.clothPhasesTaken() - phasesBefore) / steps;
 
   // One step at a time from an idle device: the host's time to queue it
   // (the call's return) and the step's whole time. Medians, so that the
@@ -194,7 +196,7 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
   r.cloth = cloth;
   r.water = int(std::lround(0.5 * (waterBefore + waterAfter)));
   if (!sim.cloth.empty()) {
-    r.clothPhases = sim.cloth.constraintPhasesPerStep(sim.settings.clothIterations, sim.settings.clothSubsteps);
+    r.clothPhases = phasesPerStep;  // the mean: Simulation.clothSubstepTravel makes them vary
     const ParticleState& ps = sim.particles;
     const std::vector<int> slots = sim.cloth.vertexSlots(ps.downloadIds(), ps.downloadPhases());
     for (const ClothStrain& s : sim.cloth.strain(ps.downloadPositions(), slots)) {

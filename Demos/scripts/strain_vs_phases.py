@@ -43,6 +43,8 @@ def run_one(soak, scene, seconds, sets, config):
                "--set", f"Simulation.clothIterations={iterations}"]
         if rho:
             cmd += ["--set", f"Simulation.clothSpectralRadius={rho}"]
+        if model == "pbd":  # fixed sub-steps: pbd's stiffness is per iteration
+            cmd += ["--set", "Simulation.clothSubstepTravel=0"]
         for s in sets:
             cmd += ["--set", s]
         proc = subprocess.run(cmd, capture_output=True, text=True)

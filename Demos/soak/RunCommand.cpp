@@ -103,9 +103,14 @@ int runCommand(const RunArguments& args) {
     std::fprintf(stderr, "soak: %s on %s%s, %d particles, dt=%g s, %d frames -> %s\n", scene.path().c_str(),
                  deviceName(device), device == Device::Cuda ? (" (" + cudaDeviceDescription() + ")").c_str() : "",
                  sim.particles.count(), double(sim.settings.timeStep), planned, out.c_str());
-    if (!sim.cloth.empty())
+    const SimulationSettings& set = sim.settings;
+    if (!sim.cloth.empty() && set.clothSubstepTravel > 0.f)
+      std::fprintf(stderr, "soak: cloth solve: %d to %d dependent phases per step (sub-steps from the cloth's speed)\n",
+                   sim.cloth.constraintPhasesPerStep(set.clothIterations, set.clothSubsteps),
+                   sim.cloth.constraintPhasesPerStep(set.clothIterations, std::max(set.clothSubsteps, set.clothMaxSubsteps)));
+    else if (!sim.cloth.empty())
       std::fprintf(stderr, "soak: cloth solve: %d dependent phases per step\n",
-                   sim.cloth.constraintPhasesPerStep(sim.settings.clothIterations, sim.settings.clothSubsteps));
+                   sim.cloth.constraintPhasesPerStep(set.clothIterations, set.clothSubsteps));
   }
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);

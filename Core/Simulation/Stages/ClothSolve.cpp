@@ -10,7 +10,8 @@ void runClothSolve(CoreStageState& state, Simulation& sim) {
   if (sim.cloth.empty()) return;
   const SimulationSettings& set = sim.settings;
   state.cloth.run(sim.particles.view(), sim.cloth, sim.deviceColliders(), int(sim.colliders.size()),
-                  {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothIterations, set.clothSpectralRadius,
+                  {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothSubstepTravel, set.clothMaxSubsteps,
+                   set.clothIterations, set.clothSpectralRadius,
                    set.contactPasses, set.crossingGuardRounds, kCollisionRadiusScale, sim.sizeListsNow()});
 }
 

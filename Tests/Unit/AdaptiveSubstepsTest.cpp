@@ -1,0 +1,95 @@
+// Cloth sub-steps from the cloth's speed (Simulation.clothSubstepTravel,
+// Cloth/AdaptiveSubsteps.h): the count follows the fastest vertex's travel,
+// stays within its bounds, and a step bends as much whatever count it takes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "Base/Error.h"
+#include "Cloth/AdaptiveSubsteps.h"
+#include "Support/TestScenes.h"
+
+using namespace soak;
+
+TEST(AdaptiveSubsteps, CountCoversTheTravelWithinItsBounds) {
+  EXPECT_EQ(substepsForTravel(3.2f, 0.5f, 2, 32), 7);  // 6.4 halves of a thickness a step
+  EXPECT_EQ(substepsForTravel(3.0f, 0.5f, 2, 32), 6);
+  EXPECT_EQ(substepsForTravel(0.1f, 0.5f, 2, 32), 2);   // slow: the fewest
+  EXPECT_EQ(substepsForTravel(100.f, 0.5f, 2, 32), 32); // fast: the most
+  EXPECT_EQ(substepsForTravel(std::numeric_limits<float>::infinity(), 0.5f, 2, 32), 32);
+  EXPECT_EQ(substepsForTravel(std::nanf(""), 0.5f, 2, 32), 32);
+  EXPECT_EQ(substepsForTravel(100.f, 0.5f, 4, 3), 4);   // the most below the fewest: the fewest
+}
+
+TEST(AdaptiveSubsteps, AFallingSheetTakesMoreSubstepsAsItSpeedsUp) {
+  // A free sheet 1 cm thick falls from rest. In step s it moves at g dt s
+  // (the predict stage's velocity: the step's start plus g dt), so the step
+  // should take ceil(g dt s dt / (0.5 x 1 cm)) sub-steps, at least 2: one
+  // more where the sheet's ripples carry a vertex a little faster.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Simulation clothIterations='6' clothSubsteps='2' clothSubstepTravel='0.5' clothMaxSubsteps='16'/>"
+      "<Cloth model='chebyshev' thickness='0.01' origin='-0.2 2 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
+      "height='0.4' cellsU='9' cellsV='9'/></Scene>",
+      Device::Cpu, reg);
+  const double g = 9.81, dt = sim->settings.timeStep;
+  int last = 0;
+  for (int s = 1; s <= 40; ++s) {
+    sim->step();
+    const int expected = std::min(16, std::max(2, int(std::ceil(g * dt * s * dt / (0.5 * 0.01)))));
+    ASSERT_GE(sim->lastClothSubsteps(), expected) << "step " << s;
+    ASSERT_LE(sim->lastClothSubsteps(), std::min(16, expected + 1)) << "step " << s;
+    ASSERT_GE(sim->lastClothSubsteps(), last) << "step " << s;
+    last = sim->lastClothSubsteps();
+  }
+  EXPECT_EQ(last, 16);  // 5.9 m/s needs 18: held at the most
+  EXPECT_EQ(sim->collectStats().get("cloth_substeps"), 16.0);
+}
+
+TEST(AdaptiveSubsteps, AStepBendsAsMuchWhateverSubstepsItTakes) {
+  // A swinging sheet with stiff bending, 8 fixed sub-steps of 10
+  // iterations, against the same scene configured for 2 whose travel asks
+  // for 8 in every step: the bending per sub-step is raised to match
+  // (ClothView::bendExponent), so the two runs agree to float rounding.
+  // With the 2-sub-step stiffness taken as it is, each of 8 sub-steps would
+  // bend as much as one of 2.
+  auto run = [](const std::string& sub) {
+    test::TestRegistry reg;
+    auto sim = test::makeSimulation(
+        "<Scene><Simulation " + sub +
+            "/><Cloth model='chebyshev' bendStiffness='0.6' origin='-0.4 1.5 0' axisU='1 0 0' axisV='0 0 1' "
+            "width='0.8' height='0.8' cellsU='19' cellsV='19' pinCorners='u0v0 u1v0'/></Scene>",
+        Device::Cpu, reg);
+    for (int s = 0; s < 30; ++s) sim->step();
+    return sim->cloth.downloadVertexPositions(sim->particles, 0);
+  };
+  const std::vector<Vec3> fixed = run("clothSubsteps='8' clothIterations='10'");
+  const std::vector<Vec3> adaptive =
+      run("clothSubsteps='2' clothIterations='10' clothSubstepTravel='1e-6' clothMaxSubsteps='8'");
+  const std::vector<Vec3> unscaled = run("clothSubsteps='2' clothIterations='10'");
+  ASSERT_EQ(fixed.size(), adaptive.size());
+  double worst = 0.0, apart = 0.0;
+  for (std::size_t v = 0; v < fixed.size(); ++v) {
+    worst = std::max(worst, double(length(fixed[v] - adaptive[v])));
+    apart = std::max(apart, double(length(fixed[v] - unscaled[v])));
+  }
+  std::printf("swinging sheet after 0.45 s: 8 fixed sub-steps against 8 taken by travel: %.2e m apart; "
+              "against 2 sub-steps: %.2e m\n", worst, apart);
+  EXPECT_LT(worst, 1e-4);
+  EXPECT_GT(apart, 10 * worst);  // the comparison can tell sub-step counts apart
+}
+
+TEST(AdaptiveSubsteps, PbdClothIsRefused) {
+  test::TestRegistry reg;
+  try {
+    test::makeSimulation(
+        "<Scene><Simulation clothSubstepTravel='0.5'/><Cloth model='pbd' width='0.4' height='0.4' cellsU='4' "
+        "cellsV='4'/></Scene>",
+        Device::Cpu, reg);
+    FAIL() << "pbd with clothSubstepTravel was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("clothSubstepTravel"), std::string::npos) << e.what();
+  }
+}
