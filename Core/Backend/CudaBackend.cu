@@ -135,6 +135,16 @@ float reduceMax(const float* x, int n) {
   check(cub::DeviceReduce::Reduce(scratch().get(bytes), bytes, x, out.dev, n, MaxOp{}, -3.0e38f), "reduceMax");
   return out.read();
 }
+void reduceMaxInto(const float* x, int n, float* out) {
+  if (n <= 0) {
+    const float identity = -3.0e38f;
+    check(cudaMemcpyAsync(out, &identity, sizeof(float), cudaMemcpyHostToDevice, 0), "reduceMaxInto");
+    return;
+  }
+  std::size_t bytes = 0;
+  cub::DeviceReduce::Reduce(nullptr, bytes, x, out, n, MaxOp{}, -3.0e38f);
+  check(cub::DeviceReduce::Reduce(scratch().get(bytes), bytes, x, out, n, MaxOp{}, -3.0e38f), "reduceMaxInto");
+}
 float reduceMin(const float* x, int n) {
   if (n <= 0) return 3.0e38f;
   HostValue<float> out;

@@ -22,6 +22,7 @@ void checkLaunch(const char* what);
 
 double reduceSum(const float* x, int n);
 float reduceMax(const float* x, int n);
+void reduceMaxInto(const float* x, int n, float* out);
 float reduceMin(const float* x, int n);
 int exclusiveScan(const int* in, int* out, int n);
 void exclusiveScanAsync(const int* in, int* out, int n);

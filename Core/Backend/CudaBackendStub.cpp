@@ -23,6 +23,7 @@ void fill(void*, int, std::size_t) { refuse(); }
 void checkLaunch(const char*) {}
 double reduceSum(const float*, int) { refuse(); }
 float reduceMax(const float*, int) { refuse(); }
+void reduceMaxInto(const float*, int, float*) { refuse(); }
 float reduceMin(const float*, int) { refuse(); }
 int exclusiveScan(const int*, int*, int) { refuse(); }
 void exclusiveScanAsync(const int*, int*, int) { refuse(); }

@@ -50,6 +50,11 @@ float reduceMax(Device d, const float* x, int n) {
   if (d == Device::Cuda) return cuda::reduceMax(x, n);
   return chunkedReduce<float>(n, -3.0e38f, maxChunk, x, [](float a, float b) { return std::max(a, b); });
 }
+void reduceMaxInto(Device d, const float* x, int n, float* out) {
+  countLaunch();
+  if (d == Device::Cuda) return cuda::reduceMaxInto(x, n, out);
+  *out = chunkedReduce<float>(n, -3.0e38f, maxChunk, x, [](float a, float b) { return std::max(a, b); });
+}
 float reduceMin(Device d, const float* x, int n) {
   countLaunch();
   countHostWait();

@@ -10,6 +10,8 @@ namespace soak {
 // 4096 added in order), so the result does not depend on the thread count.
 double reduceSum(Device d, const float* x, int n);
 float reduceMax(Device d, const float* x, int n);  // -3e38 for n == 0
+// The same into *out (device memory), without waiting for the device.
+void reduceMaxInto(Device d, const float* x, int n, float* out);
 float reduceMin(Device d, const float* x, int n);  // +3e38 for n == 0
 // out[i] = sum of in[0..i); returns the total.
 int exclusiveScan(Device d, const int* in, int* out, int n);

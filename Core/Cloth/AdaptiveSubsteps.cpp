@@ -8,13 +8,12 @@
 
 namespace soak {
 
-float clothTravelPerStep(Device d, ParticleView p, ClothView c, float dt, float* scratch) {
-  if (c.vertexCount == 0) return 0.f;
+void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* scratch, float* maxTravel) {
   forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
     const int slot = c.vertexSlot[v];
     scratch[v] = length(p.velocity[slot]) * dt / c.thickness[v];
   }, "cloth.substeps.travel");
-  return reduceMax(d, scratch, c.vertexCount);
+  reduceMaxInto(d, scratch, c.vertexCount, maxTravel);
 }
 
 int substepsForTravel(float perStep, float travel, int fewest, int most) {

@@ -15,16 +15,19 @@
 // gravity and the plugins' forces add over the step).
 // Each sub-step runs clothIterations: sharing a slow step's iterations out
 // over a fast step's sub-steps left the sheets stretched (Doc/design.md).
-// The count is read back to the host (one wait per step on the GPU).
+// The predict stage queues the measurement and its copy to the host, and
+// the cloth stage reads it, so the host waits for the device only as far
+// as predict while the device works through the stages in between.
 #include "Backend/Buffer.h"
 #include "Cloth/ClothSystem.h"
 
 namespace soak {
 
-// The largest |v| dt / thickness over the cloth's vertices, v the
-// velocity the predict stage left: how many thicknesses the fastest vertex
-// travels in the step. `scratch` holds one float per vertex.
-float clothTravelPerStep(Device d, ParticleView p, ClothView c, float dt, float* scratch);
+// Writes to *maxTravel (device memory) the largest |v| dt / thickness over
+// the cloth's vertices, v the velocity the predict stage left: how many
+// thicknesses the fastest vertex travels in the step. Queued without a
+// wait; `scratch` holds one float per vertex.
+void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* scratch, float* maxTravel);
 
 // Sub-steps for a travel of `perStep` thicknesses a step: ceil(perStep /
 // travel) within [fewest, most]; `most` when perStep is not finite.

@@ -3,7 +3,10 @@
 // contacts for one step, in one or more sub-steps (ClothSolve.h), with
 // the buffers it keeps between steps (the contact candidates, the
 // sub-steps' scratch). Reads and writes the particles' x* through `p`.
+#include <memory>
+
 #include "Backend/Buffer.h"
+#include "Backend/DownloadQueue.h"
 #include "Cloth/ClothContactLists.h"
 #include "Cloth/ClothSystem.h"
 #include "Physics/Collider.h"
@@ -27,6 +30,12 @@ struct ClothStepSettings {
 class ClothStep {
  public:
   explicit ClothStep(Device d);
+  ~ClothStep();
+  // With Simulation.clothSubstepTravel: queues the measurement of how far
+  // the cloth travels this step (AdaptiveSubsteps.h) from the velocities
+  // the predict stage left, for run() to read without waiting on the
+  // stages in between. The predict stage calls it.
+  void measureTravel(ParticleView p, ClothSystem& cloth, float dt);
   void run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
            const ClothStepSettings& s);
   // After a sub-stepped run: per slot, the velocity the last sub-step left
@@ -44,7 +53,11 @@ class ClothStep {
   Buffer<int> crossingFlag_;  // the crossing guard's flags (CrossingGuard.h), 0 between sub-steps
   Buffer<Float4> substepStart_;
   Buffer<Vec3> substepVelocity_, velocityFix_;
+  float takeTravel(ParticleView p, ClothSystem& cloth, float dt);
   Buffer<float> vertexTravel_;  // per vertex, AdaptiveSubsteps.h
+  Buffer<float> maxTravel_;     // one float: the largest
+  DownloadQueue travelDownload_;
+  std::unique_ptr<DownloadQueue::Transfer> travelMeasured_;  // queued by measureTravel, read by run
   bool substepped_ = false;
   int lastSubsteps_ = 0;
   long long phasesTaken_ = 0;

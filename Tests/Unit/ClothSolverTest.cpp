@@ -213,20 +213,22 @@ PinnedSheet waterOnPinnedSheet(const std::vector<std::string>& overrides) {
 }  // namespace
 
 TEST(ClothSolvers, SheetPinnedAtFourCornersCarriesWaterWithinItsTetherSlack) {
-  // The scene as it is (chebyshev 2 x 25, tethers with 2 % slack) against
-  // the paper's PBD 1 x 8 with 10 % slack. A flat sheet bent into a bowl
-  // must stretch; the tethers bound how much, and the solve must hold the
-  // sheet there while the block lands. Measured (CPU): 4.9 % p99 and 11 cm
-  // of sag against 46 % and 25 cm (Doc/design.md, "Cloth solver").
+  // The scene as it is (chebyshev 2 x 25, more sub-steps while the block
+  // lands, tethers with 2 % slack) against the paper's PBD 1 x 8 with 10 %
+  // slack. A flat sheet bent into a bowl must stretch; the tethers bound how
+  // much, and the solve must hold the sheet there while the block lands.
+  // Measured (CPU): 4.0 % p99, 0.92 % mean and 11 cm of sag against 46 %,
+  // 15.7 % and 25 cm (Doc/design.md, "Cloth solver").
   const PinnedSheet scene = waterOnPinnedSheet({});
   const PinnedSheet paper = waterOnPinnedSheet(
-      {"Cloth.model=pbd", "Simulation.clothSubsteps=1", "Simulation.clothIterations=8", "Cloth.tetherSlack=0.1"});
-  std::printf("water on a sheet pinned at four corners, 1.2 s: chebyshev 2 x 25, 2 %% slack: strain mean %.2f %% "
+      {"Cloth.model=pbd", "Simulation.clothSubsteps=1", "Simulation.clothIterations=8",
+       "Simulation.clothSubstepTravel=0", "Cloth.tetherSlack=0.1"});
+  std::printf("water on a sheet pinned at four corners, 1.2 s: chebyshev 2 x 25 (travel 0.5), 2 %% slack: strain mean %.2f %% "
               "p99 %.2f %%, sag %.3f m; pbd 1 x 8, 10 %% slack: mean %.2f %% p99 %.2f %%, sag %.3f m\n",
               100 * scene.worstMean, 100 * scene.worstP99, scene.sag, 100 * paper.worstMean, 100 * paper.worstP99,
               paper.sag);
-  EXPECT_LT(scene.worstP99, 0.06);
-  EXPECT_LT(scene.worstMean, 0.02);
+  EXPECT_LT(scene.worstP99, 0.05);
+  EXPECT_LT(scene.worstMean, 0.012);
   EXPECT_GT(scene.sag, 0.05f);  // it does carry the water in a bowl
   EXPECT_GT(paper.worstP99, 0.3);
 }
