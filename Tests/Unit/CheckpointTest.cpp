@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <regex>
 #include <sstream>
@@ -32,12 +33,25 @@ const char* kScene = R"(<Scene>
 </Scene>
 )";
 
+// The same sheet under the chebyshev solve with sub-steps from its speed
+// (Cloth/AdaptiveSubsteps.h): a step's sub-steps come from its state alone.
+const char* kSceneSubstepsFromSpeed = R"(<Scene>
+  <Simulation timeStep="0.015" frameRate="30" clothIterations="6" clothSubsteps="2" clothSubstepTravel="0.3"/>
+  <Water/>
+  <Cloth name="sheet" model="chebyshev" origin="-0.3 1.0 0" axisU="1 0 0" axisV="0 -1 0" width="0.6" height="0.6"
+         cellsU="15" cellsV="15" pinCorners="u0v0 u1v1"/>
+  <Plane point="0 0 0" normal="0 1 0"/>
+  <Nozzle position="0 1.2 0.15" direction="0 -1 -0.5" radius="0.03" speed="2"/>
+  <WetCloth initialSaturation="0.4"/>
+</Scene>
+)";
+
 // One file per test: ctest runs tests in parallel processes, and a file
 // shared between them could be read by one while another rewrites it.
-std::string sceneFile() {
+std::string sceneFile(const char* xml = kScene) {
   const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
   const std::string path = ::testing::TempDir() + "soak_checkpoint_" + test + ".xml";
-  writeWholeFile(path, kScene);
+  writeWholeFile(path, xml);
   return path;
 }
 
@@ -151,6 +165,34 @@ TEST(Checkpoint, AFinishedRunCanBeExtendedAndKeepsItsCheckpointInterval) {
   SoakResult r = runSoak("run --resume " + extended + " --frames 12 --device cpu --quiet");
   ASSERT_EQ(r.code, 0) << r.output;
   expectSameFrames(whole, extended, 12);
+}
+
+TEST(Checkpoint, ARunWithSubstepsFromTheClothsSpeedResumesBitIdentical) {
+  const std::string scene = sceneFile(kSceneSubstepsFromSpeed);
+  const std::string whole = freshTempPath("ckpt_whole3"), extended = freshTempPath("ckpt_extended3");
+  ASSERT_EQ(runSoak("run " + scene + " -o " + whole + " --frames 12 --device cpu --quiet").code, 0);
+  ASSERT_EQ(runSoak("run " + scene + " -o " + extended + " --frames 5 --device cpu --quiet --checkpoint-every 10").code,
+            0);
+  SoakResult r = runSoak("run --resume " + extended + " --frames 12 --device cpu --quiet");
+  ASSERT_EQ(r.code, 0) << r.output;
+  expectSameFrames(whole, extended, 12);
+  // The sheet swings: the run took more sub-steps than its fewest somewhere.
+  const std::vector<std::string> rows = statsWithoutTiming(whole);
+  std::istringstream header(rows.at(0));
+  int column = 0, substepsColumn = -1;
+  for (std::string name; std::getline(header, name, ',');) {
+    if (name == "cloth_substeps") substepsColumn = column;
+    ++column;
+  }
+  ASSERT_GE(substepsColumn, 0);
+  int most = 0;
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    std::istringstream row(rows[k]);
+    std::string cell;
+    for (int c = 0; c <= substepsColumn; ++c) std::getline(row, cell, ',');
+    most = std::max(most, std::stoi(cell));
+  }
+  EXPECT_GT(most, 2);
 }
 
 TEST(Checkpoint, CorruptedTruncatedOrMismatchedCheckpointsAreRefused) {
