@@ -31,6 +31,9 @@ float maxChunk(const float* x, int b, int e) {
   for (int i = b; i < e; ++i) m = std::max(m, x[i]);
   return m;
 }
+float maxOnCpu(const float* x, int n) {
+  return chunkedReduce<float>(n, -3.0e38f, maxChunk, x, [](float a, float b) { return std::max(a, b); });
+}
 float minChunk(const float* x, int b, int e) {
   float m = 3.0e38f;
   for (int i = b; i < e; ++i) m = std::min(m, x[i]);
@@ -48,12 +51,12 @@ float reduceMax(Device d, const float* x, int n) {
   countLaunch();
   countHostWait();
   if (d == Device::Cuda) return cuda::reduceMax(x, n);
-  return chunkedReduce<float>(n, -3.0e38f, maxChunk, x, [](float a, float b) { return std::max(a, b); });
+  return maxOnCpu(x, n);
 }
 void reduceMaxInto(Device d, const float* x, int n, float* out) {
   countLaunch();
   if (d == Device::Cuda) return cuda::reduceMaxInto(x, n, out);
-  *out = chunkedReduce<float>(n, -3.0e38f, maxChunk, x, [](float a, float b) { return std::max(a, b); });
+  *out = maxOnCpu(x, n);
 }
 float reduceMin(Device d, const float* x, int n) {
   countLaunch();

@@ -18,7 +18,6 @@
 // The predict stage queues the measurement and its copy to the host, and
 // the cloth stage reads it, so the host waits for the device only as far
 // as predict while the device works through the stages in between.
-#include "Backend/Buffer.h"
 #include "Cloth/ClothSystem.h"
 
 namespace soak {
@@ -30,7 +29,8 @@ namespace soak {
 void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* scratch, float* maxTravel);
 
 // Sub-steps for a travel of `perStep` thicknesses a step: ceil(perStep /
-// travel) within [fewest, most]; `most` when perStep is not finite.
+// travel) within [fewest, max(fewest, most)], the upper bound when perStep
+// is not finite.
 int substepsForTravel(float perStep, float travel, int fewest, int most);
 
 }  // namespace soak

@@ -41,8 +41,8 @@ class ClothStep {
   // After a sub-stepped run: per slot, the velocity the last sub-step left
   // minus (x* - x) / dt, which finalize adds (ClothSolve.h); else null.
   const Vec3* velocityFix() const { return substepped_ ? velocityFix_.data() : nullptr; }
-  // Sub-steps the last run took, and the dependent constraint phases of all
-  // runs together (ClothSystem::constraintPhasesPerStep).
+  // Sub-steps of the latest run(), and the dependent constraint phases of
+  // all runs together (ClothSystem::constraintPhasesPerStep).
   int lastSubsteps() const { return lastSubsteps_; }
   long long phasesTaken() const { return phasesTaken_; }
 

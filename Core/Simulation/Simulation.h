@@ -103,7 +103,7 @@ class Simulation final : public CheckpointState, public FrameSource {
 
   long long stepIndex() const { return stepIndex_; }
   double time() const { return time_; }
-  // Cloth sub-steps of the last step, and dependent cloth constraint phases
+  // Cloth sub-steps of the latest step, and dependent cloth constraint phases
   // of all steps of this object (Simulation.clothSubstepTravel makes both
   // vary; Cloth/AdaptiveSubsteps.h).
   int lastClothSubsteps() const { return stages_.cloth.lastSubsteps(); }
