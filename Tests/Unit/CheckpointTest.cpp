@@ -169,7 +169,7 @@ TEST(Checkpoint, AFinishedRunCanBeExtendedAndKeepsItsCheckpointInterval) {
 
 TEST(Checkpoint, ARunWithSubstepsFromTheClothsSpeedResumesBitIdentical) {
   const std::string scene = sceneFile(kSceneSubstepsFromSpeed);
-  const std::string whole = freshTempPath("ckpt_whole3"), extended = freshTempPath("ckpt_extended3");
+  const std::string whole = freshTempPath("ckpt_whole_travel"), extended = freshTempPath("ckpt_extended_travel");
   ASSERT_EQ(runSoak("run " + scene + " -o " + whole + " --frames 12 --device cpu --quiet").code, 0);
   ASSERT_EQ(runSoak("run " + scene + " -o " + extended + " --frames 5 --device cpu --quiet --checkpoint-every 10").code,
             0);
