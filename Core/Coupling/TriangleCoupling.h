@@ -122,17 +122,27 @@ SOAK_INLINE void forEachTriangleFirstAt(const ClothView& c, const ParticleView& 
 // quarter cell further: a slot is listed under the cell it was in when the
 // grid was built, and cloth moves in its own solve after that. With
 // `lanes`, this lane's share of them (Base/Lanes.h).
+struct PathBox {
+  Vec3 lo, hi;        // the cells to search
+  Vec3 x0, path;      // the path: x0 -> x0 + path
+  float len2, reach;  // |path|^2; the reach around it
+  SOAK_INLINE PathBox(const GridView& g, Vec3 from, Vec3 to, float r) : x0(from), path(to - from), reach(r) {
+    const float grow = r + 0.25f / g.invCellSize;
+    lo = Vec3(minf(from.x, to.x) - grow, minf(from.y, to.y) - grow, minf(from.z, to.z) - grow);
+    hi = Vec3(maxf(from.x, to.x) + grow, maxf(from.y, to.y) + grow, maxf(from.z, to.z) + grow);
+    len2 = lengthSquared(path);
+  }
+  // Whether cloth slot j, at y, is a candidate.
+  SOAK_INLINE bool near(Vec3 y) const { return withinReachOfPath(y, x0, path, len2, reach); }
+};
+
 template <class F>
 SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, Vec3 x0, Vec3 x, float reach,
                                       const Lanes& lanes, F&& f) {
-  const float r = reach + 0.25f / g.invCellSize;
-  const Vec3 lo(minf(x0.x, x.x) - r, minf(x0.y, x.y) - r, minf(x0.z, x.z) - r);
-  const Vec3 hi(maxf(x0.x, x.x) + r, maxf(x0.y, x.y) + r, maxf(x0.z, x.z) + r);
-  const Vec3 path = x - x0;
-  const float len2 = lengthSquared(path);
-  forEachCandidateInBox(g, lo, hi, lanes, [&](int j) {
+  const PathBox box(g, x0, x, reach);
+  forEachCandidateInBox(g, box.lo, box.hi, lanes, [&](int j) {
     if (!isCloth(p.phase[j])) return;
-    if (withinReachOfPath(p.predicted[j].xyz(), x0, path, len2, reach)) f(j);
+    if (box.near(p.predicted[j].xyz())) f(j);
   });
 }
 

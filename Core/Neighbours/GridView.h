@@ -217,13 +217,14 @@ SOAK_INLINE bool mayHoldInBox(const GridView& g, const int a[3], const int b[3])
   return false;
 }
 
-// Calls f(j) once for every slot j whose cell overlaps the box [lo, hi]
-// (at most kMaxBoxCells cells per axis, centred on the box, beyond that).
-// Cheaper than the 27 cells when the box is smaller than a cell, and it
-// follows a moving particle's whole path when it is longer.
+// A box query visits the cells that overlap the box [lo, hi], at most
+// kMaxBoxCells per axis (centred on the box beyond that).
 constexpr int kMaxBoxCells = 8;
+// Calls f(key, bucket) for every cell of the box, in the order
+// forEachCandidateInBox visits them (for passes that walk each cell's
+// bucket themselves, in rounds of lanes).
 template <class F>
-SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, const Lanes& lanes, F&& f) {
+SOAK_INLINE void forEachCellInBox(const GridView& g, Vec3 lo, Vec3 hi, F&& f) {
   int a[3] = {cellCoordinate(lo.x, g.invCellSize), cellCoordinate(lo.y, g.invCellSize),
               cellCoordinate(lo.z, g.invCellSize)};
   int b[3] = {cellCoordinate(hi.x, g.invCellSize), cellCoordinate(hi.y, g.invCellSize),
@@ -239,10 +240,17 @@ SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, cons
     const std::uint32_t sz = spreadAxis(z, 2);
     for (int y = a[1]; y <= b[1]; ++y) {
       const std::uint32_t syz = sz | spreadAxis(y, 1);
-      for (int x = a[0]; x <= b[0]; ++x)
-        forEachInBucket(g, packCellKey(x, y, z), (syz | spreadAxis(x, 0)) & g.bucketMask, lanes, f);
+      for (int x = a[0]; x <= b[0]; ++x) f(packCellKey(x, y, z), (syz | spreadAxis(x, 0)) & g.bucketMask);
     }
   }
+}
+
+// Calls f(j) once for every slot j whose cell overlaps the box. Cheaper
+// than the 27 cells when the box is smaller than a cell, and it follows a
+// moving particle's whole path when it is longer.
+template <class F>
+SOAK_INLINE void forEachCandidateInBox(const GridView& g, Vec3 lo, Vec3 hi, const Lanes& lanes, F&& f) {
+  forEachCellInBox(g, lo, hi, [&](std::uint32_t key, std::uint32_t b) { forEachInBucket(g, key, b, lanes, f); });
 }
 
 template <class F>
