@@ -117,11 +117,10 @@ SOAK_INLINE void forEachTriangleFirstAt(const ClothView& c, const ParticleView& 
   for (int k = c.firstVertexTriangleStart[v]; k < end; ++k) f(k, j);
 }
 
-// Calls f(j) for every cloth slot j within `reach` of the path x0 -> x
-// (the candidates whose triangles can matter). The cells searched extend a
-// quarter cell further: a slot is listed under the cell it was in when the
-// grid was built, and cloth moves in its own solve after that. With
-// `lanes`, this lane's share of them (Base/Lanes.h).
+// The search around a path x0 -> x for the cloth whose triangles can
+// matter: the box of cells to visit (a quarter cell wider than the reach:
+// a slot is listed under the cell it was in when the grid was built, and
+// cloth moves in its own solve after that), and the test of a candidate.
 struct PathBox {
   Vec3 lo, hi;        // the cells to search
   Vec3 x0, path;      // the path: x0 -> x0 + path
@@ -136,6 +135,8 @@ struct PathBox {
   SOAK_INLINE bool near(Vec3 y) const { return withinReachOfPath(y, x0, path, len2, reach); }
 };
 
+// Calls f(j) for every cloth slot j within `reach` of the path x0 -> x
+// (PathBox). With `lanes`, this lane's share of them (Base/Lanes.h).
 template <class F>
 SOAK_INLINE void forEachClothNearPath(const GridView& g, const ParticleView& p, Vec3 x0, Vec3 x, float reach,
                                       const Lanes& lanes, F&& f) {
