@@ -7,6 +7,15 @@
 
 namespace soak {
 
+// Blocks of 256 threads the two contact kernels keep resident per SM
+// (registers capped to fit): both are latency-bound walks of their
+// candidates, and more resident warps hide more of it. H100, both at 4
+// against uncapped (the vertex-triangle kernel had 92 registers, 21 %
+// occupancy on fig9b): `cloth.solve` fig9b 1.68-1.72 -> 1.58 ms, fig6b
+// 1.86-1.88 -> 1.62-1.64, 1M 2.64 -> 2.44; the same bits
+// (Doc/performance.md).
+constexpr int kContactBlocks = 4;
+
 void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Float4* scratch, int passes) {
   const ClothSlots cloth = clothSlots(n.cloth);
   const ClothView c = n.cloth;
@@ -17,7 +26,7 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Float4* 
   for (int pass = 0; pass < passes; ++pass) {
     const Float4* in = pass % 2 == 0 ? own : scratch;
     Float4* out = pass % 2 == 0 ? scratch : own;
-    forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+    forEachClothItemLanes<kContactBlocks>(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
       const Float4 xi4 = in[i];
       if (xi4.w == 0.f) {
         if (lanes.leader()) out[i] = xi4;
@@ -75,7 +84,7 @@ void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n)
   if (c.triangleCount == 0) return;
   snapshotTriangles(d, p, c);
   const ClothSlots cloth = clothSlots(c);
-  forEachClothItemLanes(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+  forEachClothItemLanes<kContactBlocks>(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
     const Float4 xi4 = p.predicted[i];
     if (xi4.w == 0.f) return;
     const int vi = p.id[i];

@@ -48,12 +48,14 @@ void forEachClothParticleLanes(Device d, ClothSlots cloth, F f, const char* what
 
 // The same with f(i, v, lanes): v is the particle's place among the cloth's
 // slots (the item of per-cloth-particle arrays such as ClothNeighbours').
-// minLanes: kListLanes for passes over lists.
-template <class F>
+// minLanes: kListLanes for passes over lists. minBlocksPerSm: as
+// forEachLanes' (registers capped to fit that many blocks on an SM).
+template <int minBlocksPerSm = 0, class F>
 void forEachClothItemLanes(Device d, ClothSlots cloth, F f, const char* what = "forEachClothItemLanes",
                            int minLanes = 1) {
   const int* slot = cloth.slot;
-  forEachLanes(d, cloth.count, SOAK_LAMBDA(int v, Lanes lanes) { f(slot[v], v, lanes); }, what, minLanes);
+  forEachLanes<minBlocksPerSm>(d, cloth.count, SOAK_LAMBDA(int v, Lanes lanes) { f(slot[v], v, lanes); }, what,
+                               minLanes);
 }
 
 }  // namespace soak
