@@ -128,9 +128,9 @@ struct WaterTrianglePass {
   }
 };
 
-// Blocks of 256 threads the one-lane coupling kernel keeps resident per
-// SM (registers capped to fit; see projectWaterOutOfCloth).
-constexpr int kOneLaneCouplingBlocks = 4;
+// Blocks of 256 threads the coupling kernels keep resident per SM
+// (registers capped to fit; see projectWaterOutOfCloth).
+constexpr int kCouplingBlocks = 4;
 
 }  // namespace
 
@@ -143,18 +143,20 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
   // and one lane's walk elsewhere (one lane: the larger scenes, the CPU).
   // Compiled into one kernel with the rounds, the one-lane walk took 79
   // registers instead of 72 and `coupling` at 1M 3.34-3.36 ms instead of
-  // 3.02-3.05 on the H100. The one-lane kernel is held to 64 registers
-  // (4 blocks of 256 threads an SM): 1M 3.07 -> 2.85 ms, 4M 18.8 -> 17.2
-  // (Doc/performance.md); 5 blocks (48 registers) gained less, 3 nothing.
+  // 3.02-3.05 on the H100. Both kernels are held to 64 registers (4 blocks
+  // of 256 threads an SM): the one-lane kernel at 1M 3.07 -> 2.85 ms, 4M
+  // 18.8 -> 17.2, 5 blocks (48 registers) gained less, 3 nothing; the
+  // rounds (82 registers) on fig9b 0.170-0.177 -> 0.159-0.162 ms, 3 blocks
+  // nothing (Doc/performance.md).
   const bool rounds = d == Device::Cuda && lanesFor(p.count, minLanes) > 1;
   for (int pass = 0; pass < passes; ++pass) {
     const bool first = pass == 0;
     if (rounds) {
       const WaterTrianglePass<true> f{p, g, c, vertexStiffness, passes, movedFlag, first};
-      forEachLanes(d, p.count, f, "coupling.triangles", minLanes);
+      forEachLanes<kCouplingBlocks>(d, p.count, f, "coupling.triangles", minLanes);
     } else {
       const WaterTrianglePass<false> f{p, g, c, vertexStiffness, passes, movedFlag, first};
-      forEachLanes<kOneLaneCouplingBlocks>(d, p.count, f, "coupling.triangles", minLanes);
+      forEachLanes<kCouplingBlocks>(d, p.count, f, "coupling.triangles", minLanes);
     }
   }
 }

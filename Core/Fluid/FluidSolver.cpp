@@ -274,6 +274,10 @@ namespace {
 // 10.35 / 10.04 / 10.54 (Doc/performance.md).
 constexpr int kGridWalkThreads = 250000;
 constexpr int kGridWalkMinLanes = 2;
+// Blocks of 256 threads XSPH's walk keeps resident per SM (registers capped
+// from 62 to 40 to fit): H100 `finalize` 1M 2.26 -> 2.02 ms, 2.10 at 5
+// blocks; fig9b unchanged (0.183-0.186 ms) (Doc/performance.md).
+constexpr int kXsphBlocks = 6;
 
 // Calls f(j, x_ij, r^2, h_ij) for every other water particle j within h_ij of
 // water particle i, at the positions after the step's velocity update.
@@ -304,7 +308,7 @@ void FluidSolver::applyViscosity(ParticleView p, const FluidContext& f) {
   Float4* vnew = spare_.data();  // the new velocity (xyz)
   Vec3* omega = omega_.data();
   float* omegaNorm = scratch_.data();
-  forEachLanes(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
+  forEachLanes<kXsphBlocks>(device_, p.count, SOAK_LAMBDA(int i, Lanes lanes) {
     const Vec3 vi = p.velocity[i];
     if (!isWater(p.phase[i])) {
       if (lanes.leader()) {
