@@ -11,8 +11,8 @@ namespace soak {
 // (registers capped to fit): both are latency-bound walks of their
 // candidates, and more resident warps hide more of it. H100, both at 4
 // against uncapped (the vertex-triangle kernel had 92 registers, 21 %
-// occupancy on fig9b): `cloth.solve` fig9b 1.68-1.72 -> 1.58 ms, fig6b
-// 1.86-1.88 -> 1.62-1.64, 1M 2.64 -> 2.44; the same bits
+// occupancy on fig9b): `cloth.solve` fig9b 1.68-1.72 -> 1.58-1.60 ms,
+// fig6b 1.76-1.88 -> 1.62-1.73, 1M 2.64 -> 2.44; the same bits
 // (Doc/performance.md).
 constexpr int kContactBlocks = 4;
 
