@@ -26,7 +26,7 @@ endif()
 # pointer, which UBSan's alignment check stops at. That header code is
 # TBB's, not ours: these files are built without the alignment check, with
 # every other check on. They are also built without optimisation and with
-# line tables only: instrumenting OpenVDB's templates at -O2 -g took 230 s
+# line tables only: instrumenting OpenVDB's templates at -O2 -g took 228 s
 # for VdbFiles.cpp alone, at -O0 -gline-tables-only 44 s, and the tests
 # that write VDB files spend their time in the simulation, not in OpenVDB.
 # Call from the directory that adds the sources.
