@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "Base/Error.h"
+#include "Output/RunFolder.h"
 
 namespace soak {
 
@@ -57,10 +58,16 @@ void checkOutputFolder(const std::string& outputFolder, const std::vector<std::s
     if (k == 0 && parentOf(input) == out)
       throw InputError("the output folder '" + outputFolder + "' holds the input scene '" + inputFiles[k] +
                        "'; a run writes its own scene.xml, stats.csv and frames there: choose another folder with -o");
-    for (const std::string& e : entries)
-      if (atOrUnder(input, out + (out == "/" ? "" : "/") + e))
-        throw InputError("writing to the output folder '" + outputFolder + "' would replace '" + inputFiles[k] +
-                         "', a file this run reads: choose another folder with -o");
+    // An entry of this run, or of any run (RunFolder.h's isRunEntry: what
+    // --overwrite removes), must not hold an input.
+    const std::string prefix = out + (out == "/" ? "" : "/");
+    bool replaced = false;
+    for (const std::string& e : entries) replaced = replaced || atOrUnder(input, prefix + e);
+    if (!replaced && input.size() > prefix.size() && input.compare(0, prefix.size(), prefix) == 0)
+      replaced = isRunEntry(input.substr(prefix.size(), input.find('/', prefix.size()) - prefix.size()));
+    if (replaced)
+      throw InputError("writing to the output folder '" + outputFolder + "' would replace '" + inputFiles[k] +
+                       "', a file this run reads: choose another folder with -o");
   }
 }
 

@@ -14,7 +14,8 @@ std::vector<std::string> outputEntries(const std::vector<std::string>& clothName
 
 // Throws InputError when `outputFolder` holds `inputFiles[0]` (the scene)
 // directly, or when any input file lies at or under one of the entries of
-// outputEntries(clothNames) there. Paths are compared after resolving links;
+// outputEntries(clothNames) there, or under any entry that a run writes
+// (isRunEntry, RunFolder.h), which --overwrite would remove. Paths are compared after resolving links;
 // an output folder that does not exist yet is compared as it will be made.
 void checkOutputFolder(const std::string& outputFolder, const std::vector<std::string>& inputFiles,
                        const std::vector<std::string>& clothNames);

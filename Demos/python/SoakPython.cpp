@@ -12,6 +12,7 @@
 #include "Base/Error.h"
 #include "Output/FrameWriter.h"
 #include "Output/OutputFolder.h"
+#include "Output/RunFolder.h"
 #include "Simulation/Instability.h"
 #include "Simulation/LoadedScene.h"
 #include "Simulation/Runner.h"
@@ -89,7 +90,7 @@ class PySimulation {
   }
 
   // Writes a run as `soak run` does, from the scene's initial state.
-  py::dict run(const std::string& output, int frames, double time, int checkpointEvery) {
+  py::dict run(const std::string& output, int frames, double time, int checkpointEvery, bool overwrite) {
     Simulation& s = sim();
     if (s.stepIndex() != 0)
       throw std::runtime_error("run() starts from the scene's initial state, and this simulation has been stepped "
@@ -97,7 +98,9 @@ class PySimulation {
     const Scene& scene = loaded_->scene;
     std::vector<std::string> clothNames;
     for (const ClothObject& c : s.cloth.objects()) clothNames.push_back(c.name);
+    const FolderClaim claim = overwrite ? FolderClaim::Overwrite : FolderClaim::Fresh;
     checkOutputFolder(output, scene.inputFiles(), clothNames);
+    checkRunFolderClaim(output, claim);
     RunOptions options;
     options.frames = frames;
     options.time = time;
@@ -114,6 +117,7 @@ class PySimulation {
     {
       py::gil_scoped_release release;
       std::lock_guard<std::mutex> lock(mutex_);
+      const RunFolderLock folderLock = claimRunFolder(output, claim);
       FrameWriter writer(output, scene.textAsRun(), FrameWriter::Start::Fresh, s.settings.output);
       Runner runner(s, &writer);
       bool interrupted = false;
@@ -265,9 +269,10 @@ Simulation(path=None, *, xml=None, device="auto", overrides=None, plugins=None)
       .def("advance", &PySimulation::advance, py::arg("seconds"), py::arg("profile") = false,
            "Advances by whole steps until `seconds` more are simulated; returns the steps taken.")
       .def("run", &PySimulation::run, py::arg("output"), py::kw_only(), py::arg("frames") = -1,
-           py::arg("time") = -1.0, py::arg("checkpoint_every") = 0,
+           py::arg("time") = -1.0, py::arg("checkpoint_every") = 0, py::arg("overwrite") = false,
            "Writes a run into `output` as `soak run` does (frames=N or time=T; the scene's duration by default), "
-           "from the scene's initial state. Returns frames_written, steps, wall_seconds, simulated_seconds.")
+           "from the scene's initial state. `output` must be new or empty, as for `soak run`; overwrite=True "
+           "replaces the run already there. Returns frames_written, steps, wall_seconds, simulated_seconds.")
       .def("fields", [](PySimulation& s) { return arrayFieldNames(s.sim()); },
            "Names get() and set() take: the particle arrays, then the channels (saturation, held_water, ...).")
       .def("get",

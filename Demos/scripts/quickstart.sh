@@ -9,7 +9,8 @@ cmake --build --preset release
 bash Demos/scripts/install-python-module.sh build/release
 scene=${SOAK_SCENE:-Scenes/fig1_jet.xml}
 out=soak-out/default
-build/release/bin/soak run "$scene" -o "$out" "$@"
+# --overwrite: a second quickstart replaces the default run it wrote before.
+build/release/bin/soak run "$scene" -o "$out" --overwrite "$@"
 echo
 echo "ParaView-ready output: $(pwd)/$out"
 echo "  open it:   paraview $out/water.pvd   (then File > Open $out/cloth_sheet.pvd as well)"

@@ -20,7 +20,10 @@ const char* kUsage =
     "  help                      this text\n"
     "\n"
     "run options:\n"
-    "  -o, --output DIR          output folder (default: soak-out/<scene name>)\n"
+    "  -o, --output DIR          output folder (default: soak-out/<scene name>); a new or\n"
+    "                            empty one: a run never replaces another unless asked\n"
+    "  --overwrite               replace the run already in the output folder (its frames,\n"
+    "                            checkpoint and stats are removed first; other files stay)\n"
     "  --device auto|cpu|cuda    where to simulate (default: auto = GPU when present)\n"
     "  --frames N                number of output frames after frame 0\n"
     "  --time T                  simulated seconds (instead of the scene's duration)\n"
@@ -81,6 +84,7 @@ RunArguments parseRunArguments(const std::vector<std::string>& args) {
     else if (a == "--check-stages") r.checkStages = true;
     else if (a == "--checkpoint-every") r.checkpointEvery = toInteger(a, value(), 1, kMaxRunFrames);
     else if (a == "--resume") r.resume = value();
+    else if (a == "--overwrite") r.overwrite = true;
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see soak help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene per run)");
@@ -89,6 +93,7 @@ RunArguments parseRunArguments(const std::vector<std::string>& args) {
     if (!r.scene.empty()) throw InputError("--resume continues DIR's own scene: give no scene file with it");
     if (!r.overrides.empty()) throw InputError("--resume cannot take --set: the resumed run must be the same scene");
     if (!r.output.empty()) throw InputError("--resume writes into DIR itself: give no --output with it");
+    if (r.overwrite) throw InputError("--resume continues the run in DIR: it cannot take --overwrite");
   } else if (r.scene.empty()) {
     throw InputError("soak run: no scene file given (usage: soak run SCENE.xml [options])");
   }

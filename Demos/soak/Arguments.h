@@ -31,6 +31,7 @@ struct RunArguments {
   int threads = 0;
   int checkpointEvery = 0;  // 0: no checkpoints
   std::string resume;       // output folder of a run to continue
+  bool overwrite = false;   // replace the run already in the output folder
 };
 
 // Parses the arguments after "run". Throws InputError with usage help.

@@ -30,8 +30,9 @@ PreparedRun prepareRun(const RunArguments& args) {
   run.device = resolveDevice(args.device);
   SceneSource source{args.scene, "", args.overrides, args.plugins};
   run.out = args.output.empty() ? "soak-out/" + sceneStem(args.scene) : args.output;
+  run.claim = !args.resume.empty() ? FolderClaim::Resume : args.overwrite ? FolderClaim::Overwrite : FolderClaim::Fresh;
+  if (!args.resume.empty()) run.out = args.resume;
   if (!args.resume.empty()) {
-    run.out = args.resume;
     run.checkpoint = Checkpoint::read(run.out + "/" + kCheckpointFile);
     const CheckpointHeader& h = run.checkpoint->header();
     if (readInputFile(run.out + "/scene.xml", kMaxSceneBytes, "scene file") != h.sceneText)
@@ -63,6 +64,9 @@ PreparedRun prepareRun(const RunArguments& args) {
   std::vector<std::string> clothNames;
   for (const ClothObject& c : sim.cloth.objects()) clothNames.push_back(c.name);
   checkOutputFolder(run.out, scene.inputFiles(), clothNames);
+  // A folder that holds another run, or that a running run holds, is
+  // refused before anything is written (RunFolder.h).
+  checkRunFolderClaim(run.out, run.claim);
   run.plannedFrames = Runner(sim, nullptr).plannedFrames(options);
   sim.checkPlannedParticles(run.plannedFrames / sim.settings.frameRate);
   if (run.checkpoint && run.plannedFrames <= options.startFrame)

@@ -10,6 +10,7 @@
 
 #include "Arguments.h"
 #include "Checkpoint/Checkpoint.h"
+#include "Output/RunFolder.h"
 #include "Simulation/LoadedScene.h"
 #include "Simulation/Runner.h"
 
@@ -18,6 +19,7 @@ namespace soak::cli {
 struct PreparedRun {
   Device device = Device::Cpu;
   std::string out;                       // the output folder
+  FolderClaim claim = FolderClaim::Fresh;  // how the run takes it (RunFolder.h)
   std::optional<Checkpoint> checkpoint;  // when resuming
   std::unique_ptr<LoadedScene> loaded;
   RunOptions options;

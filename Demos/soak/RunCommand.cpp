@@ -17,6 +17,7 @@
 #include "Checkpoint/Checkpoint.h"
 #include "Output/FrameWriter.h"
 #include "Output/OutputFolder.h"
+#include "Output/RunFolder.h"
 #include "Plugins/PluginLoader.h"
 #include "PrepareRun.h"
 #include "ProgressReport.h"
@@ -89,6 +90,9 @@ int runCommand(const RunArguments& args) {
   RunOptions& options = run.options;
   const int planned = run.plannedFrames;
 
+  // The folder is the run's from here on (RunFolder.h): created, locked
+  // until the process ends, and an earlier run removed with --overwrite.
+  const RunFolderLock folderLock = claimRunFolder(out, run.claim);
   FrameWriter writer(out, scene.textAsRun(), checkpoint ? FrameWriter::Start::Resume : FrameWriter::Start::Fresh,
                      sim.settings.output);
   Runner writingRunner(sim, &writer);

@@ -205,3 +205,19 @@ def test_run_writes_what_soak_run_writes(tmp_path):
     stepped.step()
     with pytest.raises(RuntimeError, match="initial state"):
         stepped.run(str(tmp_path / "again"), frames=1)
+
+
+def test_run_never_replaces_a_run_unless_asked(tmp_path):
+    scene = os.path.join(SCENES, "fig7_small.xml")
+    out = tmp_path / "run"
+    soak.Simulation(scene, device="cpu").run(str(out), frames=3, checkpoint_every=1)
+    before = (out / "water.pvd").read_bytes()
+    with pytest.raises(soak.InputError, match="already holds a Soak run"):
+        soak.Simulation(scene, device="cpu").run(str(out), frames=1)
+    assert (out / "water.pvd").read_bytes() == before
+    (out / "notes.txt").write_text("mine")
+    result = soak.Simulation(scene, device="cpu").run(str(out), frames=1, overwrite=True)
+    assert result["frames_written"] == 2
+    assert not (out / "checkpoint.soak").exists()  # the earlier run's checkpoint is gone
+    assert sorted(p.name for p in (out / "water").iterdir()) == ["water_000000.vtu", "water_000001.vtu"]
+    assert (out / "notes.txt").read_text() == "mine"  # what is not a run's stays

@@ -14,7 +14,7 @@ for f in Scenes/*.xml; do
   recipe=$(grep -m1 "^ *soak run " "$f" | sed 's/^ *soak run //')
   [ -n "$recipe" ] || recipe="$f"
   start=$(date +%s)
-  eval "\"$SOAK\" run $recipe -o \"$out/$name\" --device cpu --quiet"
+  eval "\"$SOAK\" run $recipe -o \"$out/$name\" --overwrite --device cpu --quiet"
   stats_ok "$out/$name/stats.csv" || { echo "$name: bad stats"; exit 1; }
   echo "$name: $(( $(date +%s) - start )) s, last row: $(tail -1 "$out/$name/stats.csv" | cut -d, -f2,4,5)"
 done

@@ -95,30 +95,6 @@ void expectSameFrames(const std::string& a, const std::string& b, int frames) {
   std::printf("checkpoint: %d frame files compared byte for byte\n", compared);
 }
 
-// Starts soak in the background; returns its pid.
-pid_t startSoak(const std::vector<std::string>& args) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    std::vector<char*> argv{const_cast<char*>(SOAK_BINARY)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(SOAK_BINARY, argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-// Waits until `path` exists (or the process ends); true if it appeared while running.
-bool waitForFile(pid_t pid, const std::string& path) {
-  for (int i = 0; i < 60000; ++i) {
-    if (pathExists(path)) return true;
-    int status = 0;
-    if (waitpid(pid, &status, WNOHANG) == pid) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return false;
-}
-
 }  // namespace
 
 TEST(Checkpoint, ResumeAfterAKillWritesFramesBitIdenticalToAnUninterruptedRun) {

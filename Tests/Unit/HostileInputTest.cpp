@@ -146,7 +146,8 @@ TEST(HostileInput, TheOutputFolderMayNotHoldOrReplaceTheInput) {
     EXPECT_FALSE(pathExists(in + "/water.pvd"));
   }
   // A mesh where the run would write its frames: the VTK, PLY or VDB folders.
-  for (const std::string folder : {"cloth_square", "cloth_square_ply", "water_vdb"}) {
+  // cloth_other: another run's cloth folder, which --overwrite would remove.
+  for (const std::string folder : {"cloth_square", "cloth_square_ply", "water_vdb", "cloth_other"}) {
     std::system(("mkdir -p '" + in + "/run/" + folder + "'").c_str());
     writeWholeFile(in + "/run/" + folder + "/square.obj", squareObj(1.f));
     std::string meshInRun = scene;
@@ -156,6 +157,9 @@ TEST(HostileInput, TheOutputFolderMayNotHoldOrReplaceTheInput) {
     EXPECT_EQ(r.code, 2) << folder << ": " << r.output;
     EXPECT_NE(r.output.find("would replace"), std::string::npos) << r.output;
     EXPECT_FALSE(pathExists(in + "/run/water.pvd"));
+    r = runSoak("run " + in + "/mesh_in_run.xml -o " + in + "/run --frames 1 --device cpu --quiet --overwrite");
+    EXPECT_EQ(r.code, 2) << folder << ": " << r.output;
+    EXPECT_TRUE(pathExists(in + "/run/" + folder + "/square.obj")) << "--overwrite removed an input";
   }
   // A subfolder of the scene's folder is fine.
   SoakResult r = runSoak("run " + in + "/scene.xml -o " + in + "/out --frames 1 --device cpu --quiet");

@@ -4,6 +4,11 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+#include <vector>
 
 #include <cstdio>
 #include <cstdlib>
@@ -71,6 +76,30 @@ inline std::string readWholeFile(const std::string& path) {
 
 inline void writeWholeFile(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
+}
+
+// Starts soak in the background; returns its pid.
+inline pid_t startSoak(const std::vector<std::string>& args) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::vector<char*> argv{const_cast<char*>(SOAK_BINARY)};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(SOAK_BINARY, argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+// Waits until `path` exists (or the process ends); true if it appeared while running.
+inline bool waitForFile(pid_t pid, const std::string& path) {
+  for (int i = 0; i < 60000; ++i) {
+    if (pathExists(path)) return true;
+    int status = 0;
+    if (waitpid(pid, &status, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return false;
 }
 
 }  // namespace soak::test
