@@ -12,7 +12,7 @@ namespace soak {
 
 ClothSystem::ClothSystem(Device device)
     : device_(device),
-      dEdges_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
+      dEdges_(device), dMeasuredEdges_(device), dMeasuredEdgeRest_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
       dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dFirstEdgeStart_(device), dFirstEdgeOther_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dMaterialCoord_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
@@ -160,6 +160,8 @@ void ClothSystem::upload() {
 
   dEdges_.upload(permuted(edges_, edgeOrder));
   dEdgeRest_.upload(permuted(edgeRest_, edgeOrder));
+  dMeasuredEdges_.upload(edges_);
+  dMeasuredEdgeRest_.upload(edgeRest_);
   dEdgeStiffness_.upload(permuted(edgeStiffness_, edgeOrder));
   dEdgeLambda_.resize(edgeOrder.size());
   dBends_.upload(permuted(bends_, bendOrder));
@@ -321,15 +323,18 @@ void ClothSystem::resetMultipliers() {
 }
 
 float ClothSystem::maxStretch(ParticleView p) {
-  if (dEdges_.size() == 0) return 0.f;
-  ClothView c = view();
+  const int count = int(dMeasuredEdges_.size());
+  if (count == 0) return 0.f;
+  const int* vertexSlot = view().vertexSlot;
+  const ClothEdge* edges = dMeasuredEdges_.data();
+  const float* rest = dMeasuredEdgeRest_.data();
   float* strain = scratch_.data();
-  forEach(device_, c.edgeCount, SOAK_LAMBDA(int e) {
-    Vec3 a = p.position[c.vertexSlot[c.edges[e].a]].xyz();
-    Vec3 b = p.position[c.vertexSlot[c.edges[e].b]].xyz();
-    strain[e] = fabsf(length(a - b) - c.edgeRest[e]) / c.edgeRest[e];
+  forEach(device_, count, SOAK_LAMBDA(int e) {
+    Vec3 a = p.position[vertexSlot[edges[e].a]].xyz();
+    Vec3 b = p.position[vertexSlot[edges[e].b]].xyz();
+    strain[e] = fabsf(length(a - b) - rest[e]) / rest[e];
   }, "cloth.strain");
-  return reduceMax(device_, strain, c.edgeCount);
+  return reduceMax(device_, strain, count);
 }
 
 std::vector<int> ClothSystem::vertexSlots(const std::vector<int>& id, const std::vector<int>& phase) const {

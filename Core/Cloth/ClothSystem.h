@@ -268,6 +268,9 @@ class ClothSystem {
   float maxEdgeLength_ = 0.f, maxThickness_ = 0.f;
   float minEdgeLength_ = std::numeric_limits<float>::max();
   Buffer<ClothEdge> dEdges_;
+  // Every edge of every model, for maxStretch (dEdges_ holds pbd's only).
+  Buffer<ClothEdge> dMeasuredEdges_;
+  Buffer<float> dMeasuredEdgeRest_;
   Buffer<float> dEdgeRest_, dEdgeLambda_;
   Buffer<ConstraintStiffness> dEdgeStiffness_;
   Buffer<ClothBend> dBends_;

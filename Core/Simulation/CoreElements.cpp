@@ -260,19 +260,22 @@ void registerCoreElements(ModuleRegistry& r) {
         .real("maxSpeed", &S::maxSpeed, "m/s", "A particle faster than this is reported as an instability.", 0.0,
               1e9, true)
         .integer("clothIterations", &S::clothIterations,
-                 "Cloth solver iterations n_s per step (Eq. 5), per cloth sub-step.", 1, 1000)
+                 "Cloth solver iterations n_s per step (Eq. 5), per cloth sub-step. 0: the solver's own (12 for "
+                 "chebyshev and xpbd cloth, the paper's 8 for a scene of pbd cloth only).", 0, 1000)
         .integer("clothSubsteps", &S::clothSubsteps,
                  "Cloth sub-steps per step: gravity, constraints and colliders of the cloth advance in steps "
                  "of timeStep / clothSubsteps (less stretch than the same number of iterations in one step); with "
-                 "clothSubstepTravel > 0, the fewest a step takes.",
-                 1, 100)
+                 "clothSubstepTravel > 0, the fewest a step takes. 0: the solver's own (4 for chebyshev and "
+                 "xpbd cloth, 1 for pbd only).",
+                 0, 100)
         .real("clothSubstepTravel", &S::clothSubstepTravel, "",
               "> 0: each step takes as many cloth sub-steps as keep every cloth vertex within this fraction "
               "of its thickness (Cloth.thickness) of travel per sub-step, from clothSubsteps up to "
               "clothMaxSubsteps, each of clothIterations, so that contacts see fast cloth in short sub-steps "
               "and slow cloth costs few (Doc/design.md, \"Sub-steps from the cloth's speed\"). Needs chebyshev or xpbd cloths: pbd's "
-              "stiffness is per iteration. 0: always clothSubsteps.",
-              0.0, 100.0)
+              "stiffness is per iteration. 0: always clothSubsteps. < 0: the solver's own (0.5 without pbd "
+              "cloth, 0 with it).",
+              -1.0, 100.0)
         .integer("clothMaxSubsteps", &S::clothMaxSubsteps,
                  "The most cloth sub-steps a step takes with clothSubstepTravel > 0.", 1, 100)
         .real("clothSpectralRadius", &S::clothSpectralRadius, "",

@@ -32,9 +32,11 @@ struct SimulationSettings {
   double frameRate = 30.0;     // output frames per simulated second
   Vec3 gravity{0.f, -9.81f, 0.f};
   float maxSpeed = 50.f;       // m/s; a faster particle is an instability
-  int clothIterations = 8;     // n_s of the cloth constraints (Eq. 5), per cloth sub-step
-  int clothSubsteps = 1;       // cloth sub-steps per step (Doc/model.md, "Cloth sub-steps"); the fewest with clothSubstepTravel
-  float clothSubstepTravel = 0.f;  // > 0: sub-steps from the cloth's speed (Cloth/AdaptiveSubsteps.h)
+  // The cloth solver's counts; 0 (travel < 0): the solver's own, which
+  // Simulation::initialize puts in their place (ClothSolverDefaults.h).
+  int clothIterations = 0;     // n_s of the cloth constraints (Eq. 5), per cloth sub-step
+  int clothSubsteps = 0;       // cloth sub-steps per step (Doc/model.md, "Cloth sub-steps"); the fewest with clothSubstepTravel
+  float clothSubstepTravel = -1.f;  // > 0: sub-steps from the cloth's speed (Cloth/AdaptiveSubsteps.h)
   int clothMaxSubsteps = 32;   // the most sub-steps clothSubstepTravel may ask for
   float clothSpectralRadius = 0.6f;   // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
   int couplingPasses = 2;      // passes of the water-triangle constraint per step (n_s of Eq. 5 for it)

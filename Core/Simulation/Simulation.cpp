@@ -22,6 +22,7 @@ void Simulation::addModule(std::unique_ptr<Module> module, ModuleOrigin origin) 
 
 void Simulation::initialize() {
   for (auto& m : modules_) m->configure(*this);
+  resolveClothSolverCounts(settings, clothModelsUsed);
   maxSupportRadius_ = std::max(maxSupportRadius_, water.supportRadius);
   checkCellOccupancy();  // before the wall-density table, whose cost grows as (h / r0)^3
   fluid.configure(water);

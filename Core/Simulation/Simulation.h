@@ -16,6 +16,7 @@
 #include "Pipeline/Pipeline.h"
 #include "Registry/Module.h"
 #include "Simulation/Settings.h"
+#include "Simulation/ClothSolverDefaults.h"
 #include "Simulation/Stages/CoreStages.h"
 
 namespace soak {
@@ -83,6 +84,9 @@ class Simulation final : public CheckpointState, public FrameSource {
   void loadState(StateReader& in) override;
 
   SimulationSettings settings;
+  // Cloth models the scene's <Cloth> elements ask for, noted while the
+  // settings are read (ClothSolverDefaults.h).
+  ClothModelsUsed clothModelsUsed;
   WaterSettings water;
   ParticleState particles;
   NeighbourGrid grid;

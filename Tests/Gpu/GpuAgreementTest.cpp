@@ -133,11 +133,11 @@ void expectStagesAgree(const std::string& xml, int steps, float bound) {
 
 const char* kJet =
     "<Scene><Cloth origin='-0.3 0.6 0' axisU='1 0 0' axisV='0 -1 0' width='0.6' height='0.6' cellsU='24' "
-    "cellsV='24' pinCorners='u0v0 u1v0'/><Nozzle position='0 0.4 0.3' direction='0 0 -1' radius='0.05' "
+    "cellsV='24' pinCorners='u0v0 u1v0' model='pbd'/><Nozzle position='0 0.4 0.3' direction='0 0 -1' radius='0.05' "
     "speed='4'/><Plane/></Scene>";
 const char* kWaterOnCloth =
     "<Scene><Cloth origin='-0.3 0.5 -0.3' axisU='1 0 0' axisV='0 0 1' width='0.6' height='0.6' cellsU='30' "
-    "cellsV='30' pinCorners='u0v0 u1v0 u0v1 u1v1'/><WaterBlock min='-0.1 0.53 -0.1' max='0.1 0.63 0.1'/></Scene>";
+    "cellsV='30' pinCorners='u0v0 u1v0 u0v1 u1v1' model='pbd'/><WaterBlock min='-0.1 0.53 -0.1' max='0.1 0.63 0.1'/></Scene>";
 
 }  // namespace
 
@@ -157,12 +157,12 @@ TEST(GpuAgreement, WaterOnClothWithinCpuSensitivity) {
 }
 
 TEST(GpuAgreement, ClothSubstepsWithWaterWithinCpuSensitivity) {
-  // Cloth sub-steps (4 x 4), with a collider, contacts and water on the sheet.
+  // The paper's PBD in cloth sub-steps (4 x 4), with a collider, contacts and water on the sheet.
   SOAK_SKIP_WITHOUT_GPU();
   const std::string xml =
       "<Scene><Simulation clothSubsteps='4' clothIterations='4'/><Sphere center='0 0.3 0' radius='0.15' "
       "friction='0.4'/><Cloth origin='-0.3 0.5 -0.3' axisU='1 0 0' axisV='0 0 1' width='0.6' height='0.6' "
-      "cellsU='30' cellsV='30'/><WaterBlock min='-0.1 0.53 -0.1' max='0.1 0.63 0.1'/></Scene>";
+      "cellsU='30' cellsV='30' model='pbd'/><WaterBlock min='-0.1 0.53 -0.1' max='0.1 0.63 0.1'/></Scene>";
   expectCudaWithinCpuSensitivity("sheet on a ball with water, cloth sub-steps", xml, 40);
 }
 

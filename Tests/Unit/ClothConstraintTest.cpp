@@ -66,12 +66,12 @@ TEST(ClothConstraint, ColouringNeverSharesAVertexWithinAColour) {
 }
 
 TEST(ClothSystem, SheetPinnedAtTwoCornersHangsWithBoundedStrain) {
-  // 0.4 m sheet, 21 x 21 vertices, default solver (8 iterations, PBD k = 1,
-  // tethers to the pins), dt = 0.015 s. Bound documented in Doc/model.md.
+  // 0.4 m sheet, 21 x 21 vertices, the paper's solver (8 iterations, PBD k =
+  // 1, tethers to the pins), dt = 0.015 s. Bound documented in Doc/model.md.
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
       "<Scene><Cloth origin='-0.2 1 -0.2' width='0.4' height='0.4' cellsU='20' cellsV='20' "
-      "pinCorners='u0v0 u1v0'/></Scene>",
+      "pinCorners='u0v0 u1v0' model='pbd'/></Scene>",
       Device::Cpu, reg);
   float worstLate = 0.f;
   double meanLate = 0.0;
@@ -94,4 +94,39 @@ TEST(ClothSystem, SheetPinnedAtTwoCornersHangsWithBoundedStrain) {
   std::vector<Vec3> x = sim->cloth.downloadVertexPositions(sim->particles, 0);
   EXPECT_LT(x.back().y, 1.f - 0.3f);
   EXPECT_NEAR(x[0].y, 1.f, 1e-6f);
+}
+
+TEST(ClothSystem, ASheetWithNothingChosenHangsLikeClothAndComesToRest) {
+  // A 1.2 m sheet (40 x 40) hung from two corners of one diagonal and let go,
+  // with nothing named: the default solver (chebyshev, the solver's own
+  // counts, sub-steps from the speed) keeps its strain near cloth's and
+  // brings it to rest without jitter: kinetic energy below 1e-4 of its peak
+  // over the whole last second of 5. Measured: worst frame mean 0.75 %, p99
+  // 3.6 % (in the first swing; the paper's PBD at 1 x 8 leaves several times
+  // that); kinetic energy 6e-7 of the peak.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Cloth origin='-0.6 1.9 0' axisU='1 0 0' axisV='0 -1 0' width='1.2' height='1.2' cellsU='39' "
+      "cellsV='39' pinCorners='u0v0 u1v1'/></Scene>",
+      Device::Cpu, reg);
+  EXPECT_GT(sim->settings.clothSubstepTravel, 0.f);
+  double peak = 0.0, lateEnergy = 0.0, worstMean = 0.0, worstP99 = 0.0;
+  const int steps = int(std::lround(5.0 / sim->settings.timeStep));
+  for (int s = 1; s <= steps; ++s) {
+    sim->step();
+    if (s % 2 != 0) continue;
+    const StatsRow row = sim->collectStats();
+    const double energy = row.get("kinetic_energy");
+    peak = std::max(peak, energy);
+    if (s * sim->settings.timeStep >= 4.0) lateEnergy = std::max(lateEnergy, energy);
+    worstMean = std::max(worstMean, row.get("strain_mean_cloth"));
+    worstP99 = std::max(worstP99, row.get("strain_p99_cloth"));
+  }
+  std::printf("sheet hung from two corners, default solver (%d x %d, travel %.2f): worst strain mean %.2f %% p99 "
+              "%.2f %%; kinetic energy over 4-5 s at most %.2e of its peak\n",
+              sim->settings.clothSubsteps, sim->settings.clothIterations, double(sim->settings.clothSubstepTravel),
+              100 * worstMean, 100 * worstP99, lateEnergy / peak);
+  EXPECT_LT(worstP99, 0.04);
+  EXPECT_LT(worstMean, 0.01);
+  EXPECT_LT(lateEnergy, 1e-4 * peak);
 }

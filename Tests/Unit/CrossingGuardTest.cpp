@@ -34,7 +34,7 @@ struct Crossing {
 Crossing dropAcross(int guardRounds) {
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
-      "<Scene><Simulation clothSubsteps='4' clothIterations='8' crossingGuardRounds='" +
+      "<Scene><Simulation clothSubsteps='4' clothIterations='8' clothSubstepTravel='0' crossingGuardRounds='" +
           std::to_string(guardRounds) +
           "'/>"
           "<Cloth name='a' model='chebyshev' origin='-0.04 0.005 -0.01' axisU='1 0 0' axisV='0 1 0' width='0.08' "

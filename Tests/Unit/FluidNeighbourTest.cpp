@@ -27,7 +27,7 @@ Outcome run(float skin, int steps, double listShare = 1.0, int* withoutList = nu
   auto sim = test::makeSimulation(
       "<Scene><Water neighbourSkin='" + std::to_string(skin) +
           "'/><WaterBlock min='0 0.3 0' max='0.16 0.6 0.16'/>"
-          "<Cloth origin='-0.2 0.25 -0.2' width='0.6' height='0.6' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1'/>"
+          "<Cloth origin='-0.2 0.25 -0.2' width='0.6' height='0.6' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' model='pbd'/>"
           "<Box min='-0.2 0 -0.2' max='0.6 1 0.4' inside='true' friction='0'/></Scene>",
       Device::Cpu, reg);
   if (listShare < 1.0) {
@@ -128,7 +128,7 @@ TEST(FluidNeighbours, BetweenSizingsListsGoToTheirSlotsRoomOrTheSpill) {
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
       "<Scene><WaterBlock min='0 0.3 0' max='0.16 0.6 0.16'/>"
-      "<Cloth origin='-0.2 0.25 -0.2' width='0.6' height='0.6' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1'/>"
+      "<Cloth origin='-0.2 0.25 -0.2' width='0.6' height='0.6' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' model='pbd'/>"
       "<Nozzle position='0.3 0.45 0.1' direction='-1 0 0' radius='0.03' speed='2'/>"
       "<Box min='-0.2 0 -0.2' max='0.6 1 0.4' inside='true' friction='0'/></Scene>",
       Device::Cpu, reg);

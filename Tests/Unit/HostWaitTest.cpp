@@ -14,10 +14,14 @@ using namespace soak;
 namespace {
 
 // A saturated sheet that drips into a sink, a jet that wets it, water that
-// falls past it into the sink, and a ball that moves along a path.
-std::unique_ptr<Simulation> dripScene(test::TestRegistry& reg) {
+// falls past it into the sink, and a ball that moves along a path. Its
+// cloth sub-steps are fixed (`travel` 0); with sub-steps from the cloth's
+// speed (the chebyshev default, travel 0.5) the host reads the step's
+// sub-step count back (Cloth/ClothStep.h).
+std::unique_ptr<Simulation> dripScene(test::TestRegistry& reg, const std::string& travel = "0") {
   return test::makeSimulation(
-      "<Scene><Simulation timeStep='0.005' domainMin='-2 -1 -2' domainMax='2 3 2'/>"
+      "<Scene><Simulation timeStep='0.005' domainMin='-2 -1 -2' domainMax='2 3 2' clothSubstepTravel='" + travel +
+          "'/>"
       "<Cloth origin='-0.2 1 0' axisU='1 0 0' axisV='0 -1 0' width='0.4' height='0.4' cellsU='20' cellsV='20' "
       "pinCorners='u0v0 u1v0'/>"
       "<Nozzle position='0 0.8 0.3' direction='0 0 -1' radius='0.03' speed='3'/>"
@@ -55,4 +59,16 @@ TEST(HostWaits, AStepWaitsForTheDeviceOnlyOnMaintenanceSteps) {
   EXPECT_EQ(maintenanceSteps, 200 / sim->maintenanceInterval + (200 % sim->maintenanceInterval ? 1 : 0));
   EXPECT_EQ(otherWaits, 0);
   EXPECT_GT(maintenanceWaits, 0);  // the counter counts: compaction reads the count back
+}
+
+TEST(HostWaits, SubstepsFromTheClothsSpeedCostOneWaitAStep) {
+  test::TestRegistry reg(SOAK_PLUGIN_DIR);
+  auto sim = dripScene(reg, "0.5");
+  sim->sizeListsEveryStepOnCpu = false;
+  for (int s = 0; s < 60; ++s) {
+    const bool maintenance = sim->maintenanceStep();
+    const unsigned long long before = hostWaits();
+    sim->step();
+    if (!maintenance) EXPECT_EQ(int(hostWaits() - before), 1) << "step " << s;
+  }
 }

@@ -28,7 +28,10 @@ TEST(WetCloth, WetClothLetsWaterThroughAndDryClothDoesNot) {
         "<WetCloth initialSaturation='" +
             std::to_string(saturation) + "' absorptionRate='0' emission='false' sticking='false'/>",
         reg);
-    for (int s = 0; s < 60; ++s) sim->step();
+    // 20 steps (0.3 s): the water that passed is still under the sheet's
+    // footprint; later it spreads out of it (both solvers: 115 / 145 of
+    // damp / saturated under chebyshev at step 20, 45 / 44 at step 60).
+    for (int s = 0; s < 20; ++s) sim->step();
     const std::vector<int> phase = sim->particles.downloadPhases();
     const std::vector<Float4> x = sim->particles.downloadPositions();
     const std::vector<Vec3> cloth = sim->cloth.downloadVertexPositions(sim->particles, 0);
@@ -42,7 +45,7 @@ TEST(WetCloth, WetClothLetsWaterThroughAndDryClothDoesNot) {
     return n;
   };
   const int dry = below(0.f), damp = below(0.3f), wet = below(0.4f);
-  std::printf("water particles below the sheet after 60 steps: dry %d, S = 0.3 (kappa = 0.36) %d, saturated "
+  std::printf("water particles below the sheet after 20 steps: dry %d, S = 0.3 (kappa = 0.36) %d, saturated "
               "(kappa = 0) %d\n",
               dry, damp, wet);
   EXPECT_EQ(dry, 0);
@@ -81,9 +84,9 @@ TEST(WetCloth, DampClothSticksAndDryClothDoesNot) {
     test::TestRegistry reg(SOAK_PLUGIN_DIR);
     auto sim = wetScene(std::string(kStill) +
                             "<Cloth name='lower' origin='-0.2 0.5 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
-                            "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015'/>"
+                            "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015' model='pbd'/>"
                             "<Cloth name='upper' origin='-0.2 0.52 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
-                            "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015'/>"
+                            "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015' model='pbd'/>"
                             "<WetCloth initialSaturation='" +
                             std::to_string(saturation) + "' emission='false' diffusionIterations='0'/>",
                         reg);

@@ -1,0 +1,38 @@
+#pragma once
+// The cloth solver's counts when a scene leaves them to the solver
+// (Simulation.clothIterations = 0, clothSubsteps = 0, clothSubstepTravel < 0,
+// the defaults): chosen from the cloth models the scene uses, so that a
+// <Cloth> that names nothing holds its shape (Doc/model.md, "Cloth solvers").
+//
+// - chebyshev and xpbd cloth: kChebyshevSubsteps sub-steps of
+//   kChebyshevIterations Jacobi iterations, more sub-steps when the cloth
+//   moves fast (travel kChebyshevTravel of its thickness per sub-step). On the
+//   README's example (2 s, CPU) this leaves 0.09 % mean / 1.4 % p99 edge
+//   strain in its worst frame where the paper's PBD at 1 x 8 leaves 0.74 % /
+//   12.7 %, at 1.4 times the step; 2 x 25, as many phases, leaves 2.9 % p99
+//   at 1.6 times (Doc/performance.md, "Default cloth solver").
+// - pbd only: the paper's 1 x 8, sub-steps fixed (its stiffness is per
+//   iteration, Eq. 5).
+// - both kinds in one scene: the chebyshev counts with fixed sub-steps.
+// Counts a scene gives are kept as given.
+#include "Simulation/Settings.h"
+
+namespace soak {
+
+constexpr int kChebyshevSubsteps = 4;
+constexpr int kChebyshevIterations = 12;
+constexpr float kChebyshevTravel = 0.5f;
+constexpr int kPbdSubsteps = 1;
+constexpr int kPbdIterations = 8;
+
+// Which cloth models a scene uses (each <Cloth> notes its own while the
+// settings are read, so the result does not depend on the elements' order).
+struct ClothModelsUsed {
+  bool pbd = false;
+  bool jacobiOrXpbd = false;
+};
+
+// Replaces the "solver's choice" values of `s` by the counts above.
+void resolveClothSolverCounts(SimulationSettings& s, const ClothModelsUsed& used);
+
+}  // namespace soak
