@@ -33,4 +33,40 @@ void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* 
 // is not finite.
 int substepsForTravel(float perStep, float travel, int fewest, int most);
 
+// Sub-steps from the strain the solve leaves (Simulation.clothStrainTarget).
+//
+// A solve of fixed iterations leaves strain that grows with the square of
+// the sub-step (Tests/Unit/ClothSubstepTest.cpp), and how much depends on
+// the cloth: a sheet hung from one diagonal needs about half again the
+// sub-steps of one hung from an edge for the same strain. So each step also
+// counts, at its start, the edges the step before left past the target ε
+// and past ε / 4, over the edges the stats count (a sheet's warp and weft,
+// a mesh's every edge). More than 1 % past ε (the 99th percentile over it)
+// raises the sub-steps asked for by half at once. Only kStrainCalmSteps
+// steps in a row with under 1 % past ε / 4 lower them, by one: the strain a
+// cloth settles at depends on its sub-steps, so a count lowered as soon as
+// the strain allows swings back and forth, and each change shakes the cloth
+// (measured: a hanging sheet cycling between 4 and 9 sub-steps every 7
+// steps never came to rest). Counts are integers, so the choice is the same
+// on every backend and run; it is state, saved in checkpoints.
+constexpr int kStrainCalmSteps = 60;
+// The most sub-steps the strain asks for, in multiples of the fewest: a
+// sheet draped over a ball keeps 3 % past it at 32 sub-steps, and a step's
+// cost grows with its sub-steps.
+constexpr int kStrainSubstepsFactor = 4;
+
+struct StrainSubsteps {
+  int substeps = 0;  // the sub-steps the strain asks for (0 before the first step)
+  int calmSteps = 0; // steps in a row with the 99th percentile under target / 4
+};
+
+// Writes to counts[0] the edges whose strain |l - l0| / l0 exceeds `target`
+// and to counts[1] those exceeding target / 4 (device memory), without a
+// wait. `flags` and `scan` hold 2 n ints.
+void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const ClothEdge* edges, const float* rest,
+                        int n, float target, int* flags, int* scan, int* counts);
+
+// What the strain asks for next, from what it asked before and the counts.
+StrainSubsteps substepsForStrain(StrainSubsteps current, int above, int aboveQuarter, int edges, int fewest, int most);
+
 }  // namespace soak

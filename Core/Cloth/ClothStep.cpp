@@ -1,5 +1,6 @@
 #include "Cloth/ClothStep.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "Cloth/AdaptiveSubsteps.h"
@@ -11,25 +12,44 @@ namespace soak {
 
 ClothStep::ClothStep(Device d)
     : device_(d), contactScratch_(d), contactLists_(d), crossingFlag_(d), substepStart_(d), substepVelocity_(d),
-      velocityFix_(d), vertexTravel_(d), maxTravel_(d), travelDownload_(d) {}
+      velocityFix_(d), vertexTravel_(d), maxTravel_(d), strainFlags_(d), strainScan_(d), strainCounts_(d),
+      travelDownload_(d) {}
 
 ClothStep::~ClothStep() = default;
 
-void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt) {
+void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget) {
   const ClothView c = cloth.view();
   vertexTravel_.resize(std::size_t(c.vertexCount));
   maxTravel_.resize(1);
   measureClothTravel(device_, p, c, dt, vertexTravel_.data(), maxTravel_.data());
-  travelMeasured_ = travelDownload_.download({{maxTravel_.data(), sizeof(float)}});
+  const ClothSystem::EdgeList edges = cloth.strainEdges();
+  strainQueued_ = strainTarget > 0.f && edges.count > 0;
+  if (!strainQueued_) {
+    travelMeasured_ = travelDownload_.download({{maxTravel_.data(), sizeof(float)}});
+    return;
+  }
+  strainFlags_.resize(2 * std::size_t(edges.count));
+  strainScan_.resize(2 * std::size_t(edges.count));
+  strainCounts_.resize(2);
+  measureClothStrain(device_, p, c.vertexSlot, edges.edges, edges.rest, edges.count, strainTarget,
+                     strainFlags_.data(), strainScan_.data(), strainCounts_.data());
+  travelMeasured_ = travelDownload_.download(
+      {{maxTravel_.data(), sizeof(float)}, {strainCounts_.data(), 2 * sizeof(int)}});
 }
 
-float ClothStep::takeTravel(ParticleView p, ClothSystem& cloth, float dt) {
-  if (!travelMeasured_) measureTravel(p, cloth, dt);  // a step whose predict stage did not queue it
+ClothStep::Measured ClothStep::takeMeasured(ParticleView p, ClothSystem& cloth, float dt, float strainTarget) {
+  if (!travelMeasured_) measureTravel(p, cloth, dt, strainTarget);  // a step whose predict stage did not queue it
   travelMeasured_->wait();
-  float travel = 0.f;
-  std::memcpy(&travel, travelMeasured_->part(0), sizeof(float));
+  Measured m;
+  std::memcpy(&m.travel, travelMeasured_->part(0), sizeof(float));
+  if (strainQueued_) {
+    int counts[2];
+    std::memcpy(counts, travelMeasured_->part(1), sizeof(counts));
+    m.above = counts[0];
+    m.aboveQuarter = counts[1];
+  }
   travelDownload_.recycle(std::move(travelMeasured_));
-  return travel;
+  return m;
 }
 
 void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
@@ -44,8 +64,16 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
   // The sub-steps, once the device has work queued past predict (AdaptiveSubsteps.h).
   int substeps = s.substeps;
-  if (s.substepTravel > 0.f)
-    substeps = substepsForTravel(takeTravel(p, cloth, s.dt), s.substepTravel, s.substeps, s.maxSubsteps);
+  if (s.substepTravel > 0.f) {
+    const bool measureStrain = s.strainTarget > 0.f && cloth.strainEdges().count > 0;
+    const Measured m = takeMeasured(p, cloth, s.dt, s.strainTarget);
+    substeps = substepsForTravel(m.travel, s.substepTravel, s.substeps, s.maxSubsteps);
+    if (measureStrain) {
+      strainSubsteps_ = substepsForStrain(strainSubsteps_, m.above, m.aboveQuarter, cloth.strainEdges().count,
+                                          s.substeps, std::min(s.maxSubsteps, kStrainSubstepsFactor * s.substeps));
+      substeps = std::max(substeps, strainSubsteps_.substeps);
+    }
+  }
   lastSubsteps_ = substeps;
   phasesTaken_ += cloth.constraintPhasesPerStep(s.iterations, substeps);
   ClothContactPasses contacts;

@@ -7,6 +7,7 @@
 
 #include "Backend/Buffer.h"
 #include "Backend/DownloadQueue.h"
+#include "Cloth/AdaptiveSubsteps.h"
 #include "Cloth/ClothContactLists.h"
 #include "Cloth/ClothSystem.h"
 #include "Physics/Collider.h"
@@ -19,6 +20,7 @@ struct ClothStepSettings {
   int substeps = 1;          // Simulation.clothSubsteps (the fewest, with substepTravel)
   float substepTravel = 0.f; // Simulation.clothSubstepTravel: > 0, sub-steps from the speed (AdaptiveSubsteps.h)
   int maxSubsteps = 1;       // Simulation.clothMaxSubsteps
+  float strainTarget = 0.f;  // Simulation.clothStrainTarget: > 0 (with substepTravel), sub-steps from the strain (AdaptiveSubsteps.h)
   int iterations = 1;        // Simulation.clothIterations: constraint rounds per (sub-)step
   float spectralRadius = 0;  // Simulation.clothSpectralRadius (chebyshev)
   int contactPasses = 2;     // particle contact passes per (sub-)step
@@ -35,7 +37,9 @@ class ClothStep {
   // the cloth travels this step (AdaptiveSubsteps.h) from the velocities
   // the predict stage left, for run() to read without waiting on the
   // stages in between. The predict stage calls it.
-  void measureTravel(ParticleView p, ClothSystem& cloth, float dt);
+  // With Simulation.clothStrainTarget as well, the strain the step before
+  // left (AdaptiveSubsteps.h), in the same copy.
+  void measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget);
   void run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
            const ClothStepSettings& s);
   // After a sub-stepped run: per slot, the velocity the last sub-step left
@@ -44,6 +48,10 @@ class ClothStep {
   // Sub-steps of the latest run(), and the dependent constraint phases of
   // all runs together (ClothSystem::constraintPhasesPerStep).
   int lastSubsteps() const { return lastSubsteps_; }
+  // The sub-steps the strain asks for (AdaptiveSubsteps.h; 0 before the
+  // first step): state a checkpoint keeps.
+  StrainSubsteps strainSubsteps() const { return strainSubsteps_; }
+  void setStrainSubsteps(StrainSubsteps s) { strainSubsteps_ = s; }
   long long phasesTaken() const { return phasesTaken_; }
 
  private:
@@ -53,9 +61,18 @@ class ClothStep {
   Buffer<int> crossingFlag_;  // the crossing guard's flags (CrossingGuard.h), 0 between sub-steps
   Buffer<Float4> substepStart_;
   Buffer<Vec3> substepVelocity_, velocityFix_;
-  float takeTravel(ParticleView p, ClothSystem& cloth, float dt);
+  // What measureTravel queued: the largest travel, and the strain counts
+  // (zero without a strain target).
+  struct Measured {
+    float travel = 0.f;
+    int above = 0, aboveQuarter = 0;
+  };
+  Measured takeMeasured(ParticleView p, ClothSystem& cloth, float dt, float strainTarget);
   Buffer<float> vertexTravel_;  // per vertex, AdaptiveSubsteps.h
   Buffer<float> maxTravel_;     // one float: the largest
+  Buffer<int> strainFlags_, strainScan_, strainCounts_;  // measureClothStrain's
+  bool strainQueued_ = false;
+  StrainSubsteps strainSubsteps_;
   DownloadQueue travelDownload_;
   std::unique_ptr<DownloadQueue::Transfer> travelMeasured_;  // queued by measureTravel, read by run
   bool substepped_ = false;

@@ -12,7 +12,7 @@ namespace soak {
 
 ClothSystem::ClothSystem(Device device)
     : device_(device),
-      dEdges_(device), dMeasuredEdges_(device), dMeasuredEdgeRest_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
+      dEdges_(device), dMeasuredEdges_(device), dMeasuredEdgeRest_(device), dStrainEdges_(device), dStrainEdgeRest_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
       dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dFirstEdgeStart_(device), dFirstEdgeOther_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dMaterialCoord_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
@@ -162,6 +162,15 @@ void ClothSystem::upload() {
   dEdgeRest_.upload(permuted(edgeRest_, edgeOrder));
   dMeasuredEdges_.upload(edges_);
   dMeasuredEdgeRest_.upload(edgeRest_);
+  std::vector<ClothEdge> strainEdges;
+  std::vector<float> strainRest;
+  for (std::size_t e = 0; e < edges_.size(); ++e)
+    if (edgeMeasured_[e]) {
+      strainEdges.push_back(edges_[e]);
+      strainRest.push_back(edgeRest_[e]);
+    }
+  dStrainEdges_.upload(strainEdges);
+  dStrainEdgeRest_.upload(strainRest);
   dEdgeStiffness_.upload(permuted(edgeStiffness_, edgeOrder));
   dEdgeLambda_.resize(edgeOrder.size());
   dBends_.upload(permuted(bends_, bendOrder));

@@ -211,6 +211,14 @@ class ClothSystem {
   // Largest relative edge strain |l - l0| / l0 over all edges (a reduction:
   // the host waits).
   float maxStretch(ParticleView p);
+  // The edges the strain stats count (a sheet's warp and weft, a mesh's
+  // every edge), on the device, with their rest lengths.
+  struct EdgeList {
+    const ClothEdge* edges = nullptr;
+    const float* rest = nullptr;
+    int count = 0;
+  };
+  EdgeList strainEdges() const { return {dStrainEdges_.data(), dStrainEdgeRest_.data(), int(dStrainEdges_.size())}; }
   // Slot of each cloth vertex (global vertex index) in host copies of the
   // particles' ids and phases; -1 where a vertex is absent.
   std::vector<int> vertexSlots(const std::vector<int>& id, const std::vector<int>& phase) const;
@@ -271,6 +279,8 @@ class ClothSystem {
   // Every edge of every model, for maxStretch (dEdges_ holds pbd's only).
   Buffer<ClothEdge> dMeasuredEdges_;
   Buffer<float> dMeasuredEdgeRest_;
+  Buffer<ClothEdge> dStrainEdges_;  // strainEdges()
+  Buffer<float> dStrainEdgeRest_;
   Buffer<float> dEdgeRest_, dEdgeLambda_;
   Buffer<ConstraintStiffness> dEdgeStiffness_;
   Buffer<ClothBend> dBends_;

@@ -55,6 +55,8 @@ void Simulation::saveState(StateWriter& out) const {
   out.put<std::int32_t>(cloth.vertexCount());
   particles.saveState(out);
   putListSizing(out, fluid.neighbourListSizing());
+  out.put<std::int32_t>(stages_.cloth.strainSubsteps().substeps);  // Cloth/AdaptiveSubsteps.h
+  out.put<std::int32_t>(stages_.cloth.strainSubsteps().calmSteps);
   out.put<std::int32_t>(static_cast<std::int32_t>(modules_.size()));
   for (const auto& m : modules_) {
     const Module& module = *m;
@@ -77,6 +79,13 @@ void Simulation::loadState(StateReader& in) {
   checkLoadedParticles(particles, cloth, maxSupportRadius_, in);
   if (nextId < 0) in.fail("negative next water id");
   const FluidListSizing lists = getListSizing(in, "neighbour list", maxListCapacity(particles.count()));
+  StrainSubsteps strainSubsteps;
+  strainSubsteps.substeps = in.get<std::int32_t>();
+  strainSubsteps.calmSteps = in.get<std::int32_t>();
+  if (strainSubsteps.substeps < 0 || strainSubsteps.substeps > 100 || strainSubsteps.calmSteps < 0 ||
+      strainSubsteps.calmSteps > kStrainCalmSteps)
+    in.fail("cloth sub-steps from the strain (" + std::to_string(strainSubsteps.substeps) + ", calm " +
+            std::to_string(strainSubsteps.calmSteps) + ") out of range");
   const int moduleCount = in.get<std::int32_t>();
   if (moduleCount != int(modules_.size()))
     in.fail("it was written for " + std::to_string(moduleCount) + " scene elements, the scene has " +
@@ -93,6 +102,7 @@ void Simulation::loadState(StateReader& in) {
   emittedWaterMass = emitted;
   nextWaterId = nextId;
   fluid.setNeighbourListSizing(lists);
+  stages_.cloth.setStrainSubsteps(strainSubsteps);
   cloth.updateSlots(particles.view());
   collidersDirty_ = true;
 }

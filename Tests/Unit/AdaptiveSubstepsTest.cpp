@@ -136,3 +136,30 @@ TEST(AdaptiveSubsteps, PbdClothIsRefused) {
     EXPECT_NE(std::string(e.what()).find("clothSubstepTravel"), std::string::npos) << e.what();
   }
 }
+
+TEST(AdaptiveSubsteps, TheStrainRaisesSubstepsAtOnceAndLowersThemOnlyAfterACalmSpell) {
+  // 1000 edges: 10 past the 99th percentile.
+  StrainSubsteps s;
+  s = substepsForStrain(s, 0, 50, 1000, 4, 32);  // first step, quiet enough to keep: starts at the fewest
+  EXPECT_EQ(s.substeps, 4);
+  s = substepsForStrain(s, 11, 200, 1000, 4, 32);  // p99 over the target: half again
+  EXPECT_EQ(s.substeps, 6);
+  s = substepsForStrain(s, 11, 200, 1000, 4, 32);
+  EXPECT_EQ(s.substeps, 9);
+  s = substepsForStrain(s, 10, 200, 1000, 4, 32);  // exactly 1 %: held
+  EXPECT_EQ(s.substeps, 9);
+  for (int k = 1; k < kStrainCalmSteps; ++k) {
+    s = substepsForStrain(s, 0, 9, 1000, 4, 32);  // p99 under a quarter of the target
+    ASSERT_EQ(s.substeps, 9) << "lowered after " << k << " calm steps";
+  }
+  s = substepsForStrain(s, 0, 9, 1000, 4, 32);
+  EXPECT_EQ(s.substeps, 8);
+  for (int k = 1; k < kStrainCalmSteps; ++k) s = substepsForStrain(s, 0, 9, 1000, 4, 32);
+  s = substepsForStrain(s, 0, 11, 1000, 4, 32);  // one step not calm: the spell starts again
+  for (int k = 1; k < kStrainCalmSteps; ++k) s = substepsForStrain(s, 0, 9, 1000, 4, 32);
+  EXPECT_EQ(s.substeps, 8);
+  for (int k = 0; k < 20; ++k) s = substepsForStrain(s, 500, 900, 1000, 4, 32);
+  EXPECT_EQ(s.substeps, 32);  // never past the most
+  for (int k = 0; k < 100 * kStrainCalmSteps; ++k) s = substepsForStrain(s, 0, 0, 1000, 4, 32);
+  EXPECT_EQ(s.substeps, 4);  // nor under the fewest
+}

@@ -101,9 +101,10 @@ TEST(ClothSystem, ASheetWithNothingChosenHangsLikeClothAndComesToRest) {
   // with nothing named: the default solver (chebyshev, the solver's own
   // counts, sub-steps from the speed) keeps its strain near cloth's and
   // brings it to rest without jitter: kinetic energy below 1e-4 of its peak
-  // over the whole last second of 5. Measured: worst frame mean 0.75 %, p99
-  // 3.6 % (in the first swing; the paper's PBD at 1 x 8 leaves several times
-  // that); kinetic energy 6e-7 of the peak.
+  // over the whole last second of 5. Measured: worst frame mean 0.57 %, p99
+  // 2.85 % (the first swing; sub-steps from the strain take 4, 6, then 9,
+  // and settle at 7; at a fixed 4 x 12 the p99 is 3.6 %, under the paper's
+  // PBD at 1 x 8 several times that); kinetic energy 5e-7 of the peak.
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
       "<Scene><Cloth origin='-0.6 1.9 0' axisU='1 0 0' axisV='0 -1 0' width='1.2' height='1.2' cellsU='39' "
@@ -126,7 +127,7 @@ TEST(ClothSystem, ASheetWithNothingChosenHangsLikeClothAndComesToRest) {
               "%.2f %%; kinetic energy over 4-5 s at most %.2e of its peak\n",
               sim->settings.clothSubsteps, sim->settings.clothIterations, double(sim->settings.clothSubstepTravel),
               100 * worstMean, 100 * worstP99, lateEnergy / peak);
-  EXPECT_LT(worstP99, 0.04);
+  EXPECT_LT(worstP99, 0.03);
   EXPECT_LT(worstMean, 0.01);
   EXPECT_LT(lateEnergy, 1e-4 * peak);
 }
