@@ -110,7 +110,7 @@ Case scaleCase(long long n, int warmupSteps, ScaleSheet sheet) {
   }
   std::ostringstream x;
   x << "<Scene>\n"
-    << "  <Simulation timeStep='0.015' clothSubsteps='1'/>\n"
+    << "  <Simulation timeStep='0.015'/>\n"
     << "  <Water/>\n"
     << "  <Cloth origin='" << -width / 2 << " 1 " << -width / 2 << "' width='" << width << "' height='" << width
     << "' cellsU='" << verts - 1 << "' cellsV='" << verts - 1 << "' pinCorners='u0v0 u1v0 u0v1 u1v1' tetherSlack='0.1'/>\n"
