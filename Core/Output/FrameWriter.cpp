@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "Base/Error.h"
+#include "Output/StorageFailure.h"
 #include "Output/VtkFiles.h"
 
 namespace soak {
@@ -332,7 +333,7 @@ void FrameWriter::writeStatsRow(const StatsRow& row) {
   const std::string bytes = text.str();
   stats_ << bytes;
   stats_.flush();
-  if (!stats_) throw std::runtime_error("cannot write '" + dir_ + "/stats.csv'");
+  if (!stats_) throw storageFailure(dir_ + "/stats.csv", errno);
   statsBytes_ += bytes.size();
 }
 

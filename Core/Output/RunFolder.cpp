@@ -14,6 +14,7 @@
 
 #include "Base/Error.h"
 #include "Output/OutputFolder.h"
+#include "Output/StorageFailure.h"
 
 namespace soak {
 
@@ -70,6 +71,13 @@ std::string readHolder(int fd) {
   return text.empty() ? "another process (it has not yet written its name)" : text;
 }
 
+// Where a run takes its folder, a path the user cannot write is theirs to
+// fix (exit 2); a full, read-only or failing file system is the machine's
+// (StorageError, exit 5).
+bool isMachineFailure(int errnum) {
+  return errnum == ENOSPC || errnum == EDQUOT || errnum == EROFS || errnum == EIO;
+}
+
 // mkdir -p that records the folders it made, outermost first.
 std::vector<std::string> makeFolders(const std::string& path) {
   std::vector<std::string> made;
@@ -81,6 +89,7 @@ std::vector<std::string> makeFolders(const std::string& path) {
         else if (errno != EEXIST) {
           const int e = errno;
           for (auto it = made.rbegin(); it != made.rend(); ++it) ::rmdir(it->c_str());
+          if (isMachineFailure(e)) throw StorageError(cur, e, storageCause(e));
           throw InputError("cannot create output folder '" + cur + "': " + std::strerror(e));
         }
       }
@@ -204,8 +213,11 @@ RunFolderLock& RunFolderLock::operator=(RunFolderLock&& other) noexcept {
 RunFolderLock RunFolderLock::acquire(const std::string& folder) {
   const std::string path = folder + "/" + kRunLockFile;
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw InputError("cannot lock the output folder '" + folder + "' (" + path + "): " + std::strerror(errno));
+  if (fd < 0) {
+    const int e = errno;
+    if (isMachineFailure(e)) throw StorageError(path, e, storageCause(e));
+    throw InputError("output folder '" + folder + "' is not writable (" + path + "): " + std::strerror(e));
+  }
   struct flock lock {};
   lock.l_type = F_WRLCK;
   lock.l_whence = SEEK_SET;
@@ -222,7 +234,7 @@ RunFolderLock RunFolderLock::acquire(const std::string& folder) {
   if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, text.data(), text.size(), 0) != ssize_t(text.size())) {
     const int e = errno;
     ::close(fd);
-    throw InputError("cannot write the lock file '" + path + "': " + std::strerror(e));
+    throw storageFailure(path, e);
   }
   RunFolderLock held;
   held.fd_ = fd;

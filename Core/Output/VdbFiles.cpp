@@ -1,5 +1,9 @@
 #include "Output/VdbFiles.h"
 
+#include <cerrno>
+
+#include "Output/StorageFailure.h"
+
 #include <openvdb/openvdb.h>
 #include <openvdb/points/PointConversion.h>
 #include <openvdb/tools/LevelSetRebuild.h>
@@ -83,11 +87,10 @@ void writeWaterVdb(const std::string& path, const WaterVdbFrame& frame, const Re
     openvdb::io::File file(tmp);
     file.write(grids);
     file.close();
-  } catch (const openvdb::Exception& e) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + e.what());
+  } catch (const openvdb::Exception&) {
+    throw storageFailure(path, 0, tmp);  // OpenVDB's text names no reason: the folder says it
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename '" + tmp + "'");
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw storageFailure(path, errno, tmp);
 }
 
 }  // namespace soak

@@ -13,9 +13,14 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <vtkErrorCode.h>
+#include <vtkObject.h>
+
+#include <cerrno>
 #include <cstdio>
 
 #include "Base/Error.h"
+#include "Output/StorageFailure.h"
 
 namespace soak {
 
@@ -54,8 +59,12 @@ void configureAndWrite(Writer* w, const std::string& path, Compression compressi
     case Compression::ZLib: w->SetCompressorTypeToZLib(); break;
     case Compression::LZMA: w->SetCompressorTypeToLZMA(); break;
   }
-  if (!w->Write()) throw std::runtime_error("cannot write '" + path + "'");
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename '" + tmp + "'");
+  // VTK reports a failed write on its own output window, which would print
+  // its text beside ours: the failure is reported as a StorageError instead.
+  vtkObject::GlobalWarningDisplayOff();
+  if (!w->Write())
+    throw storageFailure(path, w->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError ? ENOSPC : 0, tmp);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw storageFailure(path, errno, tmp);
 }
 }  // namespace
 
@@ -106,22 +115,25 @@ void writePolyDataVtp(const std::string& path, vtkPolyData* poly, Compression co
 
 void writeFileAtomically(const std::string& path, const std::string& content, bool durable) {
   std::string tmp = path + ".tmp";
-  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot write '" + tmp + "'");
+  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw storageFailure(path, errno);
   const char* p = content.data();
   std::size_t left = content.size();
   while (left > 0) {
     ssize_t k = ::write(fd, p, left);
     if (k <= 0) {
+      const int e = k < 0 ? errno : ENOSPC;
       ::close(fd);
-      throw std::runtime_error("cannot write '" + tmp + "'");
+      throw storageFailure(path, e, tmp);
     }
     p += k;
     left -= static_cast<std::size_t>(k);
   }
-  if (durable) ::fsync(fd);
-  ::close(fd);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename '" + tmp + "'");
+  if ((durable && ::fsync(fd) != 0) || ::close(fd) != 0) {
+    const int e = errno;
+    throw storageFailure(path, e, tmp);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw storageFailure(path, errno, tmp);
 }
 
 }  // namespace soak

@@ -280,9 +280,10 @@ void registerCoreElements(ModuleRegistry& r) {
                  "The most cloth sub-steps a step takes with clothSubstepTravel > 0.", 1, 100)
         .real("clothStrainTarget", &S::clothStrainTarget, "",
               "With clothSubstepTravel > 0: the 99th percentile of edge strain the cloth's sub-steps are raised "
-              "to keep under. Each step counts the edges the step before left past it and past half of it: over "
-              "1 % past it raises the sub-steps by half for the steps after, under 1 % past half lowers them by "
-              "one (Doc/model.md, \"Cloth solvers\"), up to 4 times clothSubsteps. 0: sub-steps from the speed "
+              "to keep under. Each step counts the edges the step before left past it and past a quarter of it: "
+              "over 1 % past it raises the sub-steps by half for the steps after; 60 steps in a row with under "
+              "1 % past the quarter lower them by one (Doc/model.md, \"The default cloth solver\"); at most 4 "
+              "times clothSubsteps. 0: sub-steps from the speed "
               "alone. < 0: the solver's own (0.02 where clothSubsteps is left to the solver and no cloth is pbd, "
               "else 0).",
               -1.0, 1.0)

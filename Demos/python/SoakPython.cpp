@@ -220,12 +220,15 @@ PYBIND11_MODULE(soak, m) {
   m.doc() = "Soak: position-based cloth wetting (Shao et al. 2017) from Python. See Doc/python.md.";
   static py::exception<InputError> inputError(m, "InputError", PyExc_ValueError);
   static py::exception<DeviceError> deviceError(m, "DeviceError", PyExc_RuntimeError);
+  static py::exception<StorageError> storageError(m, "StorageError", PyExc_OSError);
   static py::exception<InstabilityError> instabilityError(m, "InstabilityError", PyExc_RuntimeError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {
       inputError(e.what());
+    } catch (const StorageError& e) {
+      storageError(e.what());
     } catch (const DeviceError& e) {
       deviceError(e.what());
     } catch (const InstabilityError& e) {

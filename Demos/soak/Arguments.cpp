@@ -40,7 +40,9 @@ const char* kUsage =
     "                            may extend it; the scene is DIR's scene.xml, unchanged\n"
     "\n"
     "exit codes: 0 success, 1 internal error, 2 bad input (nothing written),\n"
-    "            3 device unavailable or failed, 4 simulation unstable, 130 interrupted\n";
+    "            3 device unavailable or failed, 4 simulation unstable,\n"
+    "            5 a write failed (disk full, read-only, folder removed, permission, I/O),\n"
+    "            130 interrupted\n";
 
 namespace {
 double toNumber(const std::string& opt, const std::string& v) {

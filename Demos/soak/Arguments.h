@@ -11,6 +11,7 @@ enum ExitCode {
   kExitInput = 2,       // bad scene, mesh, option or output folder; nothing written
   kExitDevice = 3,      // the device asked for is unavailable or failed
   kExitUnstable = 4,    // the simulation went unstable (NaN, runaway speed)
+  kExitStorage = 5,     // the machine failed a write: disk full, read-only, folder removed, permission, I/O
   kExitInterrupted = 130,
 };
 

@@ -1,6 +1,7 @@
 #include "RunCommand.h"
 
 #include <omp.h>
+#include <unistd.h>
 
 #include <algorithm>
 
@@ -31,6 +32,8 @@ namespace soak::cli {
 
 namespace {
 volatile std::sig_atomic_t g_interrupted = 0;
+
+bool pathExists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
 // SIGINT or SIGTERM: finish the frame under way, write it (and a checkpoint
 // when asked for), then stop. A second signal ends the program at once.
 void onInterrupt(int signal) {
@@ -134,6 +137,26 @@ int runCommand(const RunArguments& args) {
       }
       if (g_interrupted) writingRunner.requestStop();
     });
+  } catch (const StorageError& e) {
+    // The frames listed are whole (each file is written under a temporary
+    // name and listed after it is on disk): say what is kept and how to go on.
+    progress.finish();
+    const int kept = writer.framesWritten();
+    const bool folderGone = !pathExists(out);
+    std::fprintf(stderr, "soak: %s\n", e.what());
+    if (folderGone)
+      std::fprintf(stderr, "      the output folder %s is gone, and the run with it\n", out.c_str());
+    else if (pathExists(out + "/" + kCheckpointFile))
+      std::fprintf(stderr,
+                   "      frames 0-%d are whole and listed in %s; once the cause is fixed, continue with:\n"
+                   "        soak run --resume %s\n",
+                   kept - 1, out.c_str(), out.c_str());
+    else
+      std::fprintf(stderr,
+                   "      frames 0-%d are whole and listed in %s; the run kept no checkpoint to resume from "
+                   "(--checkpoint-every N keeps one): once the cause is fixed, run it again with --overwrite\n",
+                   kept - 1, out.c_str());
+    return kExitStorage;
   } catch (const InstabilityError& e) {
     writer.flush();  // the frames before the instability are whole and kept
     progress.finish();

@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
   } catch (const soak::InputError& e) {
     std::fprintf(stderr, "soak: error: %s\n", e.what());
     return kExitInput;
+  } catch (const soak::StorageError& e) {
+    std::fprintf(stderr, "soak: %s\n", e.what());
+    return kExitStorage;
   } catch (const soak::DeviceError& e) {
     std::fprintf(stderr, "soak: device error: %s\n", e.what());
     return kExitDevice;
