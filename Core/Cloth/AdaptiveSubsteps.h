@@ -46,9 +46,10 @@ int substepsForTravel(float perStep, float travel, int fewest, int most);
 // steps in a row with under 1 % past ε / 4 lower them, by one: the strain a
 // cloth settles at depends on its sub-steps, so a count lowered as soon as
 // the strain allows swings back and forth, and each change shakes the cloth
-// (measured: a hanging sheet cycling between 4 and 9 sub-steps every 7
-// steps never came to rest). Counts are integers, so the choice is the same
-// on every backend and run; it is state, saved in checkpoints.
+// (measured: lowered at once, a hanging sheet cycles between 4 and 9
+// sub-steps every 7 steps and never comes to rest). Counts are integers, so
+// the choice is the same on every backend and run; it is state, saved in
+// checkpoints.
 constexpr int kStrainCalmSteps = 60;
 // The most sub-steps the strain asks for, in multiples of the fewest: a
 // sheet draped over a ball keeps 3 % past it at 32 sub-steps, and a step's

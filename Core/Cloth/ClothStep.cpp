@@ -42,7 +42,8 @@ ClothStep::Measured ClothStep::takeMeasured(ParticleView p, ClothSystem& cloth, 
   travelMeasured_->wait();
   Measured m;
   std::memcpy(&m.travel, travelMeasured_->part(0), sizeof(float));
-  if (strainQueued_) {
+  m.strain = strainQueued_;
+  if (m.strain) {
     int counts[2];
     std::memcpy(counts, travelMeasured_->part(1), sizeof(counts));
     m.above = counts[0];
@@ -65,10 +66,9 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   // The sub-steps, once the device has work queued past predict (AdaptiveSubsteps.h).
   int substeps = s.substeps;
   if (s.substepTravel > 0.f) {
-    const bool measureStrain = s.strainTarget > 0.f && cloth.strainEdges().count > 0;
     const Measured m = takeMeasured(p, cloth, s.dt, s.strainTarget);
     substeps = substepsForTravel(m.travel, s.substepTravel, s.substeps, s.maxSubsteps);
-    if (measureStrain) {
+    if (m.strain) {
       strainSubsteps_ = substepsForStrain(strainSubsteps_, m.above, m.aboveQuarter, cloth.strainEdges().count,
                                           s.substeps, std::min(s.maxSubsteps, kStrainSubstepsFactor * s.substeps));
       substeps = std::max(substeps, strainSubsteps_.substeps);

@@ -62,9 +62,10 @@ class ClothStep {
   Buffer<Float4> substepStart_;
   Buffer<Vec3> substepVelocity_, velocityFix_;
   // What measureTravel queued: the largest travel, and the strain counts
-  // (zero without a strain target).
+  // where it measured the strain.
   struct Measured {
     float travel = 0.f;
+    bool strain = false;
     int above = 0, aboveQuarter = 0;
   };
   Measured takeMeasured(ParticleView p, ClothSystem& cloth, float dt, float strainTarget);

@@ -28,28 +28,16 @@ std::string parentOf(const std::string& path) {
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-bool atOrUnder(const std::string& path, const std::string& entry) {
-  return path == entry || (path.size() > entry.size() && path.compare(0, entry.size(), entry) == 0 &&
-                           path[entry.size()] == '/');
-}
-
 }  // namespace
 
-std::vector<std::string> outputEntries(const std::vector<std::string>& clothNames) {
-  std::vector<std::string> entries{"scene.xml", "stats.csv", "checkpoint.soak", "water.pvd", "water",
-                                   "water_surface.pvd", "water_surface", "water_vdb"};
-  for (const std::string& name : clothNames) {
-    entries.push_back("cloth_" + name + ".pvd");
-    entries.push_back("cloth_" + name);
-    entries.push_back("cloth_" + name + "_ply");
-  }
-  return entries;
+std::vector<std::string> outputEntries() {
+  return {"scene.xml", "stats.csv", "checkpoint.soak", "water.pvd", "water", "water_surface.pvd", "water_surface",
+          "water_vdb"};
 }
 
-void checkOutputFolder(const std::string& outputFolder, const std::vector<std::string>& inputFiles,
-                       const std::vector<std::string>& clothNames) {
+void checkOutputFolder(const std::string& outputFolder, const std::vector<std::string>& inputFiles) {
   const std::string out = canonicalPath(outputFolder);
-  const std::vector<std::string> entries = outputEntries(clothNames);
+  const std::string prefix = out + (out == "/" ? "" : "/");
   for (std::size_t k = 0; k < inputFiles.size(); ++k) {
     char* real = ::realpath(inputFiles[k].c_str(), nullptr);
     if (!real) continue;  // not a file on disk (a scene given as text, a resumed run's moved scene)
@@ -58,14 +46,9 @@ void checkOutputFolder(const std::string& outputFolder, const std::vector<std::s
     if (k == 0 && parentOf(input) == out)
       throw InputError("the output folder '" + outputFolder + "' holds the input scene '" + inputFiles[k] +
                        "'; a run writes its own scene.xml, stats.csv and frames there: choose another folder with -o");
-    // An entry of this run, or of any run (RunFolder.h's isRunEntry: what
-    // --overwrite removes), must not hold an input.
-    const std::string prefix = out + (out == "/" ? "" : "/");
-    bool replaced = false;
-    for (const std::string& e : entries) replaced = replaced || atOrUnder(input, prefix + e);
-    if (!replaced && input.size() > prefix.size() && input.compare(0, prefix.size(), prefix) == 0)
-      replaced = isRunEntry(input.substr(prefix.size(), input.find('/', prefix.size()) - prefix.size()));
-    if (replaced)
+    // An input inside the output folder may not lie in an entry a run writes.
+    const bool inside = input.size() > prefix.size() && input.compare(0, prefix.size(), prefix) == 0;
+    if (inside && isRunEntry(input.substr(prefix.size(), input.find('/', prefix.size()) - prefix.size())))
       throw InputError("writing to the output folder '" + outputFolder + "' would replace '" + inputFiles[k] +
                        "', a file this run reads: choose another folder with -o");
   }

@@ -8,16 +8,16 @@
 
 namespace soak {
 
-// The files and folders a run writes directly inside its output folder
-// (FrameWriter.h), given the names of its cloth objects.
-std::vector<std::string> outputEntries(const std::vector<std::string>& clothNames);
+// The fixed names a run writes directly inside its output folder
+// (FrameWriter.h); each cloth adds cloth_<name>.pvd, cloth_<name>/ and
+// cloth_<name>_ply/ (RunFolder.h's isRunEntry knows both).
+std::vector<std::string> outputEntries();
 
 // Throws InputError when `outputFolder` holds `inputFiles[0]` (the scene)
-// directly, or when any input file lies at or under one of the entries of
-// outputEntries(clothNames) there, or under any entry that a run writes
-// (isRunEntry, RunFolder.h), which --overwrite would remove. Paths are compared after resolving links;
-// an output folder that does not exist yet is compared as it will be made.
-void checkOutputFolder(const std::string& outputFolder, const std::vector<std::string>& inputFiles,
-                       const std::vector<std::string>& clothNames);
+// directly, or when any input file lies at or under an entry a run writes
+// there (isRunEntry, RunFolder.h: what --overwrite would remove). Paths are
+// compared after resolving links; an output folder that does not exist yet
+// is compared as it will be made.
+void checkOutputFolder(const std::string& outputFolder, const std::vector<std::string>& inputFiles);
 
 }  // namespace soak

@@ -121,7 +121,7 @@ std::string refusal(const std::string& folder, const RunFolderContents& c) {
 bool isRunEntry(const std::string& name) {
   if (name == kRunLockFile) return false;
   const std::string base = endsWith(name, ".tmp") ? name.substr(0, name.size() - 4) : name;
-  for (const std::string& e : outputEntries({}))
+  for (const std::string& e : outputEntries())
     if (base == e) return true;
   if (startsWith(base, "cloth_") && base.size() > 6) return true;  // .pvd, frames folder, _ply folder
   return false;

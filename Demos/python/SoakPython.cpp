@@ -96,10 +96,8 @@ class PySimulation {
       throw std::runtime_error("run() starts from the scene's initial state, and this simulation has been stepped "
                                "already; make a new Simulation to run it");
     const Scene& scene = loaded_->scene;
-    std::vector<std::string> clothNames;
-    for (const ClothObject& c : s.cloth.objects()) clothNames.push_back(c.name);
     const FolderClaim claim = overwrite ? FolderClaim::Overwrite : FolderClaim::Fresh;
-    checkOutputFolder(output, scene.inputFiles(), clothNames);
+    checkOutputFolder(output, scene.inputFiles());
     checkRunFolderClaim(output, claim);
     RunOptions options;
     options.frames = frames;

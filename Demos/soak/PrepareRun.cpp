@@ -61,9 +61,7 @@ PreparedRun prepareRun(const RunArguments& args) {
     if (options.checkpointEvery == 0) options.checkpointEvery = h.checkpointEvery;
   }
   options.checkpointHeader.checkpointEvery = options.checkpointEvery;
-  std::vector<std::string> clothNames;
-  for (const ClothObject& c : sim.cloth.objects()) clothNames.push_back(c.name);
-  checkOutputFolder(run.out, scene.inputFiles(), clothNames);
+  checkOutputFolder(run.out, scene.inputFiles());
   // A folder that holds another run, or that a running run holds, is
   // refused before anything is written (RunFolder.h).
   checkRunFolderClaim(run.out, run.claim);

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <regex>
 #include <sstream>
 #include <thread>
 #include <vector>
@@ -83,15 +82,6 @@ std::vector<std::string> statsWithoutTiming(const std::string& dir) {
 }
 
 // Files listed by a .pvd collection.
-std::vector<std::string> pvdFiles(const std::string& pvdPath) {
-  const std::string text = readWholeFile(pvdPath);
-  std::vector<std::string> files;
-  const std::regex entry("file=\"([^\"]+)\"");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it)
-    files.push_back((*it)[1]);
-  return files;
-}
-
 void expectSameFrames(const std::string& a, const std::string& b, int frames) {
   int compared = 0;
   for (int f = 0; f <= frames; ++f)

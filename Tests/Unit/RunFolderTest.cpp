@@ -52,18 +52,7 @@ std::set<std::string> listing(const std::string& dir) {
   return names;
 }
 
-int framesListed(const std::string& dir) {
-  const std::string text = readWholeFile(dir + "/water.pvd");
-  int n = 0;
-  for (std::size_t at = text.find("<DataSet"); at != std::string::npos; at = text.find("<DataSet", at + 1)) ++n;
-  return n;
-}
-
-int exitCodeOf(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+int framesListed(const std::string& dir) { return int(pvdFiles(dir + "/water.pvd").size()); }
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <regex>
 #include <thread>
 #include <vector>
 
@@ -76,6 +77,23 @@ inline std::string readWholeFile(const std::string& path) {
 
 inline void writeWholeFile(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
+}
+
+// The files a .pvd collection lists, in its order.
+inline std::vector<std::string> pvdFiles(const std::string& pvdPath) {
+  const std::string text = readWholeFile(pvdPath);
+  std::vector<std::string> files;
+  const std::regex entry("file=\"([^\"]+)\"");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it)
+    files.push_back((*it)[1]);
+  return files;
+}
+
+// Waits for a child process; its exit code, or -1 if a signal ended it.
+inline int exitCodeOf(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 // Starts soak in the background; returns its pid.

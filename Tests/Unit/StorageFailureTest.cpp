@@ -50,16 +50,6 @@ class SmallFileSystem {
 
 std::string scene() { return std::string(SOAK_SOURCE_DIR) + "/Scenes/fig7_small.xml"; }
 
-std::vector<std::string> listedFiles(const std::string& pvd) {
-  const std::string text = readWholeFile(pvd);
-  std::vector<std::string> files;
-  for (std::size_t at = text.find("file=\""); at != std::string::npos; at = text.find("file=\"", at + 1)) {
-    const std::size_t end = text.find('"', at + 6);
-    files.push_back(text.substr(at + 6, end - at - 6));
-  }
-  return files;
-}
-
 // What every storage failure must leave: exit 5, the cause named, no
 // library text, no temporary file, every listed frame whole.
 void expectCleanFailure(const SoakResult& r, const std::string& dir, const std::string& cause) {
@@ -70,14 +60,8 @@ void expectCleanFailure(const SoakResult& r, const std::string& dir, const std::
   if (!std::filesystem::exists(dir)) return;
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
     EXPECT_NE(e.path().extension(), ".tmp") << e.path() << " left behind";
-  for (const std::string& f : listedFiles(dir + "/water.pvd"))
+  for (const std::string& f : pvdFiles(dir + "/water.pvd"))
     EXPECT_NE(readWholeFile(dir + "/" + f).find("</VTKFile>"), std::string::npos) << f << " is listed but not whole";
-}
-
-int exitCodeOf(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 }  // namespace
@@ -90,7 +74,7 @@ TEST(StorageFailure, AFullDiskStopsTheRunWithItsCodeAndTheRunResumesOnceThereIsR
   const std::string dir = fs.path() + "/run";
   const SoakResult r = runSoak("run " + scene() + " -o " + dir + " --frames 40 --device cpu --quiet --checkpoint-every 2");
   expectCleanFailure(r, dir, "no space left on the device");
-  const std::size_t listed = listedFiles(dir + "/water.pvd").size();
+  const std::size_t listed = pvdFiles(dir + "/water.pvd").size();
   ASSERT_GE(listed, 3u) << r.output;  // the frames before the disk filled are kept
   ASSERT_TRUE(pathExists(dir + "/checkpoint.soak")) << r.output;
   EXPECT_NE(r.output.find("soak run --resume " + dir), std::string::npos) << r.output;
@@ -98,7 +82,7 @@ TEST(StorageFailure, AFullDiskStopsTheRunWithItsCodeAndTheRunResumesOnceThereIsR
   ASSERT_TRUE(fs.remount("size=64m"));
   const SoakResult resumed = runSoak("run --resume " + dir + " --device cpu --quiet");
   EXPECT_EQ(resumed.code, 0) << resumed.output;
-  EXPECT_EQ(listedFiles(dir + "/water.pvd").size(), 41u);
+  EXPECT_EQ(pvdFiles(dir + "/water.pvd").size(), 41u);
 }
 
 TEST(StorageFailure, AFullDiskBeforeAnyCheckpointSaysTheRunCannotBeResumed) {
