@@ -19,7 +19,7 @@ import time
 import bpy
 
 BACKGROUND = (0.78, 0.82, 0.88, 1.0)   # a pale sky
-BACKGROUND_STRENGTH = 0.8
+BACKGROUND_STRENGTH = 0.45
 
 
 def parse(argv):
@@ -98,6 +98,7 @@ def configure(scene, samples, width, height, threads=0, device="auto"):
     scene.render.image_settings.file_format = "PNG"
     scene.render.image_settings.color_mode = "RGB"
     scene.view_settings.view_transform = "Filmic"
+    scene.view_settings.look = "Medium High Contrast"
     world = scene.world or bpy.data.worlds.new("soak_world")
     scene.world = world
     world.use_nodes = True

@@ -4,7 +4,8 @@
 # /usr/local/cuda (or nvcc on PATH) is there, the CUDA backend is built too.
 # clang and its runtime are for the sanitizer build and the fuzzers (Doc/reliability.md);
 # pybind11, numpy and pytest for the Python module (Doc/python.md), OpenVDB (whose CMake
-# module also asks for Boost.Iostreams) for the .vdb export (Doc/output.md).
+# module also asks for Boost.Iostreams) for the .vdb export (Doc/output.md); Blender for the
+# tests of the Blender add-on (Demos/blender, Doc/output.md "Blender").
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
@@ -13,6 +14,7 @@ packages=(
   xvfb python3-matplotlib
   pybind11-dev python3-pybind11 python3-numpy python3-pytest libopenvdb-dev libboost-iostreams-dev
   clang libclang-rt-14-dev libomp-dev
+  blender
 )
 missing=()
 for p in "${packages[@]}"; do

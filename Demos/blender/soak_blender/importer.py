@@ -38,7 +38,7 @@ def _set_frame_rate(scene, rate):
 
 def _sun(collection, camera_obj):
     data = bpy.data.lights.new("soak_sun", "SUN")
-    data.energy = 3.0
+    data.energy = 2.0
     data.angle = math.radians(3.0)
     obj = bpy.data.objects.new("soak_sun", data)
     # 50 degrees high, 40 degrees to the left of the camera's direction (seen from above).

@@ -5,10 +5,10 @@ turns it into a wetness w = saturation / sMax (0 dry, 1 at the scene's
 `<WetCloth sMax>`; node "Wetness"). As w rises, the fabric does what wet
 cotton does:
 - its colour darkens and deepens: the base colour goes from "Dry colour" to
-  "Dry colour" raised to the power "Wet darkening" (node "Wet colour": a
-  Gamma node). Water fills the air between the fibres, so less light
-  scatters back out, and each colour channel falls the more the darker it
-  was;
+  "Wet colour" = "Dry colour" raised to the power "Wet darkening", times
+  "Wet brightness". Water fills the air between the fibres, so less light
+  scatters back out of the fabric, and the power makes each colour channel
+  fall the more the darker it was (wet fabric looks more saturated);
 - it turns glossier: roughness from "Dry roughness" to "Wet roughness", and a
   clear coat (the water film on the fibres) from 0 to "Wet film".
 Every value an artist would change is a labelled node (RGB or Value) at the
@@ -19,7 +19,7 @@ IOR 1.333, and a light blue absorption in the volume, so deep water is
 bluer than thin water. Shadow rays pass its surface (node "Clear to
 shadows"), since the renders leave out caustics.
 
-"Soak collider" is a matte grey. "Soak container" is the same grey on the
+"Soak collider" is a matte dark grey, against which dry and wet cloth both show. "Soak container" is the same grey on the
 faces seen from inside and transparent on faces seen from outside, so a
 tank's near walls do not hide what is in it.
 """
@@ -31,11 +31,12 @@ COLLIDER = "Soak collider"
 CONTAINER = "Soak container"
 
 DRY_COLOUR = (0.80, 0.76, 0.68, 1.0)   # natural cotton
-WET_DARKENING = 2.5
+WET_DARKENING = 2.0
+WET_BRIGHTNESS = 0.45
 DRY_ROUGHNESS = 0.9
 WET_ROUGHNESS = 0.35
-WET_FILM = 0.5
-COLLIDER_COLOUR = (0.55, 0.55, 0.53, 1.0)
+WET_FILM = 0.3
+COLLIDER_COLOUR = (0.22, 0.22, 0.23, 1.0)
 
 
 def _new(name):
@@ -81,11 +82,19 @@ def wet_cloth(s_max):
     dry.outputs[0].default_value = DRY_COLOUR
     dry.location = (-900, -100)
     darkening = _value(nodes, "Wet darkening", WET_DARKENING, (-900, -300))
-    wet = nodes.new("ShaderNodeGamma")
+    deeper = nodes.new("ShaderNodeGamma")
+    deeper.label = deeper.name = "Deeper colour"
+    deeper.location = (-650, -150)
+    links.new(dry.outputs[0], deeper.inputs["Color"])
+    links.new(darkening.outputs[0], deeper.inputs["Gamma"])
+    wet_brightness = _value(nodes, "Wet brightness", WET_BRIGHTNESS, (-900, -380))
+    wet = nodes.new("ShaderNodeMixRGB")
     wet.label = wet.name = "Wet colour"
-    wet.location = (-650, -150)
-    links.new(dry.outputs[0], wet.inputs["Color"])
-    links.new(darkening.outputs[0], wet.inputs["Gamma"])
+    wet.blend_type = "MULTIPLY"
+    wet.location = (-650, -350)
+    wet.inputs["Fac"].default_value = 1.0
+    links.new(deeper.outputs[0], wet.inputs["Color1"])
+    links.new(wet_brightness.outputs[0], wet.inputs["Color2"])
     colour = nodes.new("ShaderNodeMixRGB")
     colour.label = colour.name = "Colour by wetness"
     colour.location = (-400, 100)
@@ -93,13 +102,13 @@ def wet_cloth(s_max):
     links.new(dry.outputs[0], colour.inputs["Color1"])
     links.new(wet.outputs[0], colour.inputs["Color2"])
 
-    dry_rough = _value(nodes, "Dry roughness", DRY_ROUGHNESS, (-900, -450))
-    wet_rough = _value(nodes, "Wet roughness", WET_ROUGHNESS, (-900, -550))
+    dry_rough = _value(nodes, "Dry roughness", DRY_ROUGHNESS, (-900, -500))
+    wet_rough = _value(nodes, "Wet roughness", WET_ROUGHNESS, (-900, -600))
     roughness = _map_range(nodes, "Roughness by wetness", (-400, -300))
     links.new(wetness.outputs["Result"], roughness.inputs["Value"])
     links.new(dry_rough.outputs[0], roughness.inputs["To Min"])
     links.new(wet_rough.outputs[0], roughness.inputs["To Max"])
-    film_node = _value(nodes, "Wet film", WET_FILM, (-900, -650))
+    film_node = _value(nodes, "Wet film", WET_FILM, (-900, -700))
     film = nodes.new("ShaderNodeMath")
     film.label = film.name = "Film by wetness"
     film.operation = "MULTIPLY"

@@ -11,10 +11,11 @@ makes:
   `surface` grid at 0 (the water's surface) every frame, smooth shaded.
 
 The volume object is rotated from Soak's y-up axes to Blender's z-up, and
-moved back by half a voxel along each grid axis: Blender places a VDB
-voxel's value at the voxel's corner where OpenVDB places it at the centre
-(its Volume to Mesh adds half a voxel), and the shift puts the surface
-where Soak computed it.
+moved by half a voxel down each of Blender's axes: Blender's Volume to
+Mesh adds half a voxel along each axis of the mesh object (it takes a
+voxel's value to sit at the voxel's corner, where OpenVDB puts it at the
+centre), and the shift puts the mesh where Soak's level set has its zero,
+so long as `water_surface` is neither rotated nor scaled.
 """
 import os
 
@@ -58,8 +59,12 @@ def create_volume(run, collection):
     volume.frame_offset = first - 1
     volume.sequence_mode = "EXTEND"
     obj = bpy.data.objects.new("water_volume", volume)
-    shift = -0.5 * (_voxel_axes(volume, run) @ Vector((1.0, 1.0, 1.0)))
-    obj.matrix_world = Matrix.Rotation(axes.SOAK_TO_BLENDER_EULER[0], 4, "X") @ Matrix.Translation(shift)
+    rotation = Matrix.Rotation(axes.SOAK_TO_BLENDER_EULER[0], 4, "X")
+    voxel = _voxel_axes(volume, run)
+    # The modifier adds half the voxel's extent along each axis of the mesh object's space.
+    extent = [(rotation.to_3x3() @ voxel.col[i]) for i in range(3)]
+    half = Vector([0.5 * sum(abs(e[axis]) for e in extent) for axis in range(3)])
+    obj.matrix_world = Matrix.Translation(-half) @ rotation
     obj.display_type = "BOUNDS"
     obj.hide_render = True
     collection.objects.link(obj)
