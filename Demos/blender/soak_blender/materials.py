@@ -1,9 +1,11 @@
 """Default materials: wet cloth, water, colliders (Doc/output.md, "Blender").
 
 "Soak wet cloth" reads the mesh attribute `saturation` (Attribute node) and
-turns it into a wetness w = saturation / sMax (0 dry, 1 at the scene's
-`<WetCloth sMax>`; node "Wetness"). As w rises, the fabric does what wet
-cotton does:
+turns it into a wetness w = (saturation / sMax) ^ "Wetness exponent" (0
+dry, 1 at the scene's `<WetCloth sMax>`; node "Wetness"). The exponent, 0.5,
+makes a fabric look wet well before it is full: it darkens where water
+has replaced the air at its surface, which happens before its pores are
+full. As w rises, the fabric does what wet cotton does:
 - its colour darkens and deepens: the base colour goes from "Dry colour" to
   "Wet colour" = "Dry colour" raised to the power "Wet darkening", times
   "Wet brightness". Water fills the air between the fibres, so less light
@@ -19,9 +21,10 @@ IOR 1.333, and a light blue absorption in the volume, so deep water is
 bluer than thin water. Shadow rays pass its surface (node "Clear to
 shadows"), since the renders leave out caustics.
 
-"Soak collider" is a matte dark grey, against which dry and wet cloth both show. "Soak container" is the same grey on the
-faces seen from inside and transparent on faces seen from outside, so a
-tank's near walls do not hide what is in it.
+"Soak collider" is a matte dark grey, against which dry and wet cloth both
+show. "Soak container" is the same grey on the faces seen from inside and
+transparent on faces seen from outside, so a tank's near walls do not hide
+what is in it; light passes its walls, so a closed tank is not dark inside.
 """
 import bpy
 
@@ -31,8 +34,9 @@ COLLIDER = "Soak collider"
 CONTAINER = "Soak container"
 
 DRY_COLOUR = (0.80, 0.76, 0.68, 1.0)   # natural cotton
+WETNESS_EXPONENT = 0.5
 WET_DARKENING = 2.0
-WET_BRIGHTNESS = 0.45
+WET_BRIGHTNESS = 0.2
 DRY_ROUGHNESS = 0.9
 WET_ROUGHNESS = 0.35
 WET_FILM = 0.3
@@ -73,9 +77,16 @@ def wet_cloth(s_max):
     attribute.attribute_name = "saturation"
     attribute.location = (-900, 300)
     s_max_node = _value(nodes, "Saturation when soaked (WetCloth sMax)", s_max, (-900, 100))
-    wetness = _map_range(nodes, "Wetness", (-650, 300))
-    links.new(attribute.outputs["Fac"], wetness.inputs["Value"])
-    links.new(s_max_node.outputs[0], wetness.inputs["From Max"])
+    fraction = _map_range(nodes, "Saturation / sMax", (-700, 300))
+    links.new(attribute.outputs["Fac"], fraction.inputs["Value"])
+    links.new(s_max_node.outputs[0], fraction.inputs["From Max"])
+    exponent = _value(nodes, "Wetness exponent", WETNESS_EXPONENT, (-900, 0))
+    wetness = nodes.new("ShaderNodeMath")
+    wetness.label = wetness.name = "Wetness"
+    wetness.operation = "POWER"
+    wetness.location = (-500, 300)
+    links.new(fraction.outputs["Result"], wetness.inputs[0])
+    links.new(exponent.outputs[0], wetness.inputs[1])
 
     dry = nodes.new("ShaderNodeRGB")
     dry.label = dry.name = "Dry colour"
@@ -98,14 +109,14 @@ def wet_cloth(s_max):
     colour = nodes.new("ShaderNodeMixRGB")
     colour.label = colour.name = "Colour by wetness"
     colour.location = (-400, 100)
-    links.new(wetness.outputs["Result"], colour.inputs["Fac"])
+    links.new(wetness.outputs[0], colour.inputs["Fac"])
     links.new(dry.outputs[0], colour.inputs["Color1"])
     links.new(wet.outputs[0], colour.inputs["Color2"])
 
     dry_rough = _value(nodes, "Dry roughness", DRY_ROUGHNESS, (-900, -500))
     wet_rough = _value(nodes, "Wet roughness", WET_ROUGHNESS, (-900, -600))
     roughness = _map_range(nodes, "Roughness by wetness", (-400, -300))
-    links.new(wetness.outputs["Result"], roughness.inputs["Value"])
+    links.new(wetness.outputs[0], roughness.inputs["Value"])
     links.new(dry_rough.outputs[0], roughness.inputs["To Min"])
     links.new(wet_rough.outputs[0], roughness.inputs["To Max"])
     film_node = _value(nodes, "Wet film", WET_FILM, (-900, -700))
@@ -113,7 +124,7 @@ def wet_cloth(s_max):
     film.label = film.name = "Film by wetness"
     film.operation = "MULTIPLY"
     film.location = (-400, -550)
-    links.new(wetness.outputs["Result"], film.inputs[0])
+    links.new(wetness.outputs[0], film.inputs[0])
     links.new(film_node.outputs[0], film.inputs[1])
 
     bsdf = nodes.new("ShaderNodeBsdfPrincipled")
@@ -173,7 +184,7 @@ def collider():
 
 
 def container():
-    """Grey where the face's front (the inside) faces the camera, transparent where its back does."""
+    """Grey where the face's front (the inside) faces the ray, transparent where its back does and to shadow rays."""
     material, nodes, links = _new(CONTAINER)
     geometry = nodes.new("ShaderNodeNewGeometry")
     geometry.location = (-400, 300)
@@ -183,9 +194,17 @@ def container():
     bsdf.inputs["Roughness"].default_value = 0.6
     clear = nodes.new("ShaderNodeBsdfTransparent")
     clear.location = (-400, -200)
+    light_path = nodes.new("ShaderNodeLightPath")
+    light_path.location = (-650, 450)
+    clear_where = nodes.new("ShaderNodeMath")
+    clear_where.label = clear_where.name = "Seen from outside, or a shadow ray"
+    clear_where.operation = "MAXIMUM"
+    clear_where.location = (-200, 350)
+    links.new(geometry.outputs["Backfacing"], clear_where.inputs[0])
+    links.new(light_path.outputs["Is Shadow Ray"], clear_where.inputs[1])
     mix = nodes.new("ShaderNodeMixShader")
     mix.location = (0, 100)
-    links.new(geometry.outputs["Backfacing"], mix.inputs["Fac"])
+    links.new(clear_where.outputs[0], mix.inputs["Fac"])
     links.new(bsdf.outputs[0], mix.inputs[1])
     links.new(clear.outputs[0], mix.inputs[2])
     out = nodes.new("ShaderNodeOutputMaterial")
