@@ -98,7 +98,12 @@ def configure(scene, samples, width, height, threads=0, device="auto"):
     scene.render.image_settings.file_format = "PNG"
     scene.render.image_settings.color_mode = "RGB"
     scene.view_settings.view_transform = "Filmic"
-    scene.view_settings.look = "Medium High Contrast"
+    for look in ("Medium High Contrast", "Filmic - Medium High Contrast"):   # Blender 3, Blender 4
+        try:
+            scene.view_settings.look = look
+            break
+        except TypeError:
+            pass
     world = scene.world or bpy.data.worlds.new("soak_world")
     scene.world = world
     world.use_nodes = True

@@ -51,6 +51,21 @@ def _new(name):
     return material, nodes, material.node_tree.links
 
 
+# Principled BSDF inputs that Blender 4 renamed: (Blender 3 name, Blender 4 name).
+SHEEN = ("Sheen", "Sheen Weight")
+COAT = ("Clearcoat", "Coat Weight")
+COAT_ROUGHNESS = ("Clearcoat Roughness", "Coat Roughness")
+TRANSMISSION = ("Transmission", "Transmission Weight")
+
+
+def _input(node, names):
+    """The node's input of the first name it has."""
+    for name in names:
+        if name in node.inputs:
+            return node.inputs[name]
+    raise KeyError(f"{node.name} has none of the inputs {names}")
+
+
 def _value(nodes, label, value, location):
     node = nodes.new("ShaderNodeValue")
     node.label = node.name = label
@@ -129,11 +144,11 @@ def wet_cloth(s_max):
 
     bsdf = nodes.new("ShaderNodeBsdfPrincipled")
     bsdf.location = (-100, 100)
-    bsdf.inputs["Sheen"].default_value = 0.3
-    bsdf.inputs["Clearcoat Roughness"].default_value = 0.08
+    _input(bsdf, SHEEN).default_value = 0.3
+    _input(bsdf, COAT_ROUGHNESS).default_value = 0.08
     links.new(colour.outputs[0], bsdf.inputs["Base Color"])
     links.new(roughness.outputs["Result"], bsdf.inputs["Roughness"])
-    links.new(film.outputs[0], bsdf.inputs["Clearcoat"])
+    links.new(film.outputs[0], _input(bsdf, COAT))
     out = nodes.new("ShaderNodeOutputMaterial")
     out.location = (250, 100)
     links.new(bsdf.outputs[0], out.inputs["Surface"])
@@ -145,7 +160,7 @@ def water():
     bsdf = nodes.new("ShaderNodeBsdfPrincipled")
     bsdf.location = (-300, 200)
     bsdf.inputs["Base Color"].default_value = (0.92, 0.97, 1.0, 1.0)
-    bsdf.inputs["Transmission"].default_value = 1.0
+    _input(bsdf, TRANSMISSION).default_value = 1.0
     bsdf.inputs["Roughness"].default_value = 0.02
     bsdf.inputs["IOR"].default_value = 1.333
     absorption = nodes.new("ShaderNodeVolumeAbsorption")
