@@ -2,8 +2,8 @@
 
 `viewAngle` is the vertical field of view (as ParaView's), so the camera's
 sensor fit is vertical and the picture's height shows that angle whatever
-its width. Without a `<Camera>`, the camera looks at the cloths' first frame
-from the front right, above, as Doc/render.py does.
+its width. Without a `<Camera>`, the camera looks at the cloths and the
+water of the first frame from the front right, above, as Doc/render.py does.
 """
 import math
 
@@ -29,9 +29,9 @@ def look_at(position, focus, up):
     return Matrix.Translation(Vector(position)) @ rotation
 
 
-def _framing(objects, view_angle):
-    """(position, focus) of a view of the objects' bounding sphere."""
-    points = [obj.matrix_world @ Vector(c) for obj in objects for c in obj.bound_box]
+def _framing(objects, depsgraph, view_angle):
+    """(position, focus) of a view of the objects' bounding sphere (as evaluated: the water is meshed)."""
+    points = [obj.matrix_world @ Vector(c) for obj in objects for c in obj.evaluated_get(depsgraph).bound_box]
     if not points:
         points = [Vector((0.0, 0.0, 0.0))]
     lo = Vector([min(p[i] for p in points) for i in range(3)])
@@ -43,7 +43,7 @@ def _framing(objects, view_angle):
     return focus + distance * direction, focus
 
 
-def create(run, collection, frame_objects):
+def create(run, collection, frame_objects, depsgraph):
     element = run.element("Camera")
     data = bpy.data.cameras.new("soak_camera")
     data.sensor_fit = "VERTICAL"
@@ -56,7 +56,7 @@ def create(run, collection, frame_objects):
         up = axes.point(vector(element, "up"))
     else:
         view_angle = 30.0
-        position, focus = _framing(frame_objects, view_angle)
+        position, focus = _framing(frame_objects, depsgraph, view_angle)
         up = (0.0, 0.0, 1.0)
     data.angle_y = math.radians(view_angle)
     obj = bpy.data.objects.new("soak_camera", data)

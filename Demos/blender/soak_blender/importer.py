@@ -72,9 +72,11 @@ def import_run(context, folder, options=None):
             obj.data.materials.append(cloth_material)
         cloth_objects.append(obj)
 
+    framed = list(cloth_objects)
     if options.water_surface and water.has_water(run):
         volume_obj = water.create_volume(run, collection)
         surface_obj = water.create_surface(volume_obj, collection)
+        framed.append(surface_obj)
         if options.materials:
             surface_obj.data.materials.append(materials.water())
     elif options.water_surface:
@@ -83,13 +85,6 @@ def import_run(context, folder, options=None):
     if options.colliders:
         colliders.create(run, collection, materials.collider() if options.materials else None,
                          materials.container() if options.materials else None)
-
-    camera_obj = None
-    if options.camera:
-        camera_obj = camera.create(run, collection, cloth_objects)
-        scene.camera = camera_obj
-    if options.sun:
-        _sun(collection, camera_obj)
 
     if options.frame_range:
         _set_frame_rate(scene, run.frame_rate)
@@ -100,5 +95,12 @@ def import_run(context, folder, options=None):
     # draw the viewport meanwhile.
     scene.render.use_lock_interface = True
     scene.frame_set(scene.frame_start if options.frame_range else scene.frame_current)
+
+    camera_obj = None
+    if options.camera:
+        camera_obj = camera.create(run, collection, framed, context.evaluated_depsgraph_get())
+        scene.camera = camera_obj
+    if options.sun:
+        _sun(collection, camera_obj)
     return collection, warnings
 
