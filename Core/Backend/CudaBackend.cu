@@ -4,6 +4,7 @@
 
 #include <cub/cub.cuh>
 #include <thrust/iterator/transform_iterator.h>
+#include <cstdio>
 #include <string>
 
 #include "Backend/CudaBackend.h"
@@ -81,6 +82,10 @@ std::size_t memoryBytes() {
   std::size_t free = 0, total = 0;
   return cudaMemGetInfo(&free, &total) == cudaSuccess ? total : 0;
 }
+std::size_t freeMemoryBytes() {
+  std::size_t free = 0, total = 0;
+  return cudaMemGetInfo(&free, &total) == cudaSuccess ? free : 0;
+}
 
 void synchronize() { check(cudaDeviceSynchronize(), "synchronize"); }
 
@@ -104,8 +109,11 @@ void* allocate(std::size_t bytes) {
   cudaError_t e = cudaMallocAsync(&p, bytes, 0);
   if (e != cudaSuccess) {
     cudaGetLastError();
-    throw DeviceError("GPU out of memory allocating " + std::to_string(bytes) + " bytes (" +
-                      cudaGetErrorString(e) + ")");
+    char b[160];
+    std::snprintf(b, sizeof(b), "GPU out of memory allocating %.3g MiB (%s); the GPU has %.3g MiB free of %.3g MiB",
+                  double(bytes) / 1048576.0, cudaGetErrorString(e), double(freeMemoryBytes()) / 1048576.0,
+                  double(memoryBytes()) / 1048576.0);
+    throw DeviceError(b);
   }
   return p;
 }

@@ -13,6 +13,8 @@ bool available(std::string* why);
 std::string description();
 // Total memory of the GPU in bytes (0 if unknown).
 std::size_t memoryBytes();
+// Memory of the GPU not yet allocated, in bytes (0 if unknown).
+std::size_t freeMemoryBytes();
 void synchronize();
 void* allocate(std::size_t bytes);
 void release(void* p) noexcept;

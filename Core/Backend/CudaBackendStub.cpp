@@ -15,6 +15,7 @@ bool available(std::string* why) {
 }
 std::string description() { return {}; }
 std::size_t memoryBytes() { return 0; }
+std::size_t freeMemoryBytes() { return 0; }
 void synchronize() {}
 void* allocate(std::size_t) { refuse(); }
 void release(void*) noexcept {}

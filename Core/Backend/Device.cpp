@@ -3,12 +3,14 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <unordered_map>
 
 #include "Backend/CudaBackend.h"
+#include "Backend/ProcessLimits.h"
 #include "Base/Error.h"
 
 namespace soak {
@@ -68,8 +70,28 @@ std::size_t deviceMemoryBytes(Device d) {
   return pages > 0 && pageSize > 0 ? std::size_t(pages) * std::size_t(pageSize) : 0;
 }
 
+MemoryBound deviceMemoryBudget(Device d) {
+  if (d == Device::Cpu) return smallestBound(hostMemoryBounds());
+  std::vector<MemoryBound> bounds;
+  const std::size_t free = cuda::freeMemoryBytes();
+  if (free > 0) bounds.push_back({double(free), "the GPU's free memory"});
+  const double env = memoryLimitFromEnvironment();
+  if (env >= 0.0) bounds.push_back({env, "SOAK_MEMORY_LIMIT"});
+  return smallestBound(bounds);
+}
+
 void* deviceAllocate(Device d, std::size_t bytes) {
   if (bytes == 0) bytes = 1;
+  const double cap = memoryLimitFromEnvironment();
+  if (cap >= 0.0 && double(deviceBytesInUse(d)) + double(bytes) > cap) {
+    char b[200];
+    std::snprintf(b, sizeof(b),
+                  "allocating %.3g MiB on the %s would take the run's arrays to %.3g MiB, past SOAK_MEMORY_LIMIT "
+                  "(%.3g MiB)",
+                  double(bytes) / 1048576.0, d == Device::Cuda ? "GPU" : "host",
+                  (double(deviceBytesInUse(d)) + double(bytes)) / 1048576.0, cap / 1048576.0);
+    throw DeviceError(b);
+  }
   void* p = nullptr;
   if (d == Device::Cuda) {
     p = cuda::allocate(bytes);

@@ -2,6 +2,8 @@
 #include <cstddef>
 #include <string>
 
+#include "Backend/ProcessLimits.h"
+
 namespace soak {
 
 // Where physics runs. Chosen at run time (--device auto|cpu|cuda).
@@ -40,7 +42,8 @@ void countHostWait();
 unsigned long long launches();
 void countLaunch();
 
-// Raw memory on a device. Errors throw DeviceError.
+// Raw memory on a device. Errors throw DeviceError, and so does a request
+// that would take the run's arrays past SOAK_MEMORY_LIMIT.
 void* deviceAllocate(Device d, std::size_t bytes);
 void deviceFree(Device d, void* p) noexcept;
 void copyHostToDevice(Device d, void* dst, const void* src, std::size_t bytes);
@@ -51,6 +54,11 @@ void fillBytes(Device d, void* dst, int value, std::size_t bytes);
 // Total memory of the device in bytes: the GPU's, or the machine's RAM for
 // the CPU (0 if unknown).
 std::size_t deviceMemoryBytes(Device d);
+// What a run's arrays may take on the device, and what says so: on the CPU
+// the smallest of the machine's memory and this process's limits
+// (ProcessLimits.h), on the GPU its free memory; SOAK_MEMORY_LIMIT caps both.
+// bytes < 0 when nothing is known.
+MemoryBound deviceMemoryBudget(Device d);
 // Bytes of device memory currently allocated through deviceAllocate (per device).
 std::size_t deviceBytesInUse(Device d);
 

@@ -19,12 +19,16 @@ bool startsWith(const std::string& line, char c) {
 
 // What tinyobjloader lets pass without a word, checked here so that the
 // file is refused with its line number: "nan" or "inf" coordinates (read as
-// 0) and faces of one or two vertices (dropped). Returns the line of every
-// face, in order, for messages about faces.
-std::vector<int> scanObjLines(const std::string& text, const std::string& path) {
+// 0) and faces of one or two vertices (dropped). Records the line of every
+// face and every vertex, in order, for messages about them.
+struct ObjLines {
+  std::vector<int> faces, vertices;
+};
+ObjLines scanObjLines(const std::string& text, const std::string& path) {
   std::istringstream in(text);
   std::string line;
-  std::vector<int> faceLines;
+  ObjLines lines;
+  std::vector<int>& faceLines = lines.faces;
   for (int lineNo = 1; std::getline(in, line); ++lineNo) {
     if (startsWith(line, 'f')) {
       std::istringstream tokens(line.substr(0, line.find('#')).substr(2));  // the corners, up to a comment
@@ -36,6 +40,7 @@ std::vector<int> scanObjLines(const std::string& text, const std::string& path) 
       faceLines.push_back(lineNo);
     }
     if (!startsWith(line, 'v')) continue;
+    lines.vertices.push_back(lineNo);
     std::istringstream tokens(line.substr(2));
     std::string tok;
     for (int c = 0; c < 3 && tokens >> tok; ++c) {
@@ -45,13 +50,18 @@ std::vector<int> scanObjLines(const std::string& text, const std::string& path) 
         throw InputError("vertex coordinate '" + tok + "' is not a finite number", path + ":" + std::to_string(lineNo));
     }
   }
-  return faceLines;
+  return lines;
+}
+
+std::string lineOf(const std::vector<int>& lines, std::size_t i) {
+  return i < lines.size() && lines[i] > 0 ? " (line " + std::to_string(lines[i]) + ")" : std::string();
 }
 }  // namespace
 
 TriangleMesh loadObjMesh(const std::string& path) {
   const std::string text = readInputFile(path, kMaxMeshBytes, "OBJ mesh");
-  const std::vector<int> faceLines = scanObjLines(text, path);
+  const ObjLines lines = scanObjLines(text, path);
+  const std::vector<int>& faceLines = lines.faces;
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;
   config.vertex_color = false;
@@ -67,6 +77,7 @@ TriangleMesh loadObjMesh(const std::string& path) {
   TriangleMesh mesh;
   const std::size_t nv = attrib.vertices.size() / 3;
   mesh.vertices.resize(nv);
+  if (lines.vertices.size() == nv) mesh.vertexLines = lines.vertices;
   for (std::size_t i = 0; i < nv; ++i)
     mesh.vertices[i] = Vec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
   // Faces in file order (shapes are too), so face k is on faceLines[k]
@@ -115,6 +126,8 @@ void validateClothMesh(const TriangleMesh& mesh, const std::string& name) {
       throw InputError("vertex " + std::to_string(i + 1) + " has a NaN or infinite coordinate", name);
   if (mesh.triangles.empty()) throw InputError("mesh has no triangles", name);
   std::map<std::pair<int, int>, int> edgeUse;
+  std::map<std::array<int, 3>, std::size_t> firstWithCorners;  // sorted corners -> first triangle
+  std::vector<bool> used(std::size_t(nv), false);
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
     const bool hasLine = f < mesh.triangleLines.size() && mesh.triangleLines[f] > 0;
@@ -130,6 +143,16 @@ void validateClothMesh(const TriangleMesh& mesh, const std::string& name) {
     const float scale = std::max({lengthSquared(b - a), lengthSquared(c - a), lengthSquared(c - b)});
     if (!(area2 > 1e-7f * scale))
       throw InputError("triangle " + std::to_string(f + 1) + " is degenerate (zero area)", where);
+    // The same three vertices twice, in either winding: each edge looks
+    // shared by two triangles, and the pair would fold the cloth onto itself.
+    std::array<int, 3> corners = t;
+    std::sort(corners.begin(), corners.end());
+    const auto [first, fresh] = firstWithCorners.emplace(corners, f);
+    if (!fresh)
+      throw InputError("triangle " + std::to_string(f + 1) + " repeats triangle " + std::to_string(first->second + 1) +
+                           lineOf(mesh.triangleLines, first->second) + ": the same three vertices; remove one",
+                       where);
+    for (int k : t) used[std::size_t(k)] = true;
     for (int c2 = 0; c2 < 3; ++c2) {
       int u = t[c2], v = t[(c2 + 1) % 3];
       if (++edgeUse[{std::min(u, v), std::max(u, v)}] > 2)
@@ -140,6 +163,13 @@ void validateClothMesh(const TriangleMesh& mesh, const std::string& name) {
                          where);
     }
   }
+  for (int i = 0; i < nv; ++i)
+    if (!used[std::size_t(i)]) {
+      const bool hasLine = std::size_t(i) < mesh.vertexLines.size() && mesh.vertexLines[std::size_t(i)] > 0;
+      throw InputError("vertex " + std::to_string(i + 1) +
+                           " is used by no triangle: it would fall as a lone particle; remove it",
+                       hasLine ? name + ":" + std::to_string(mesh.vertexLines[std::size_t(i)]) : name);
+    }
 }
 
 }  // namespace soak

@@ -75,6 +75,7 @@ class ClothModule : public Module {
       spec.mesh = loadObjMesh(p_.resolvePath(meshFile));
       sim.checkParticleBudget(double(spec.mesh.vertices.size()), "<Cloth> mesh " + meshFile, where);
       spec.mesh.triangleLines.clear();  // checked against the file already; later messages name the scene
+      spec.mesh.vertexLines.clear();
       for (Vec3& x : spec.mesh.vertices) x = x * c.scale + c.translate;
     }
     validateClothMesh(spec.mesh, where);

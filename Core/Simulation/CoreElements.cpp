@@ -309,7 +309,9 @@ void registerCoreElements(ModuleRegistry& r) {
     limits
         .integer("maxParticles", &ResourceLimits::maxParticles,
                  "Limit: most particles the run may hold, counting all its nozzles would emit up to its end "
-                 "(0: as many as the device's memory holds at about 512 bytes each).",
+                 "(0: as many as the memory the run may take holds at about 512 bytes each: on the CPU the smallest of "
+                 "the machine's memory, ulimit -v and -d, the cgroup's memory limit and SOAK_MEMORY_LIMIT; on the GPU "
+                 "its free memory).",
                  0, 2000000000)
         .integer("maxStepsPerFrame", &ResourceLimits::maxStepsPerFrame,
                  "Limit: most time steps between two output frames.", 1, 2000000000)

@@ -27,8 +27,8 @@ std::string count(double n) {
 
 double Simulation::particleBudget() const {
   if (settings.limits.maxParticles > 0) return double(std::min(settings.limits.maxParticles, kMaxParticles));
-  const double available = double(deviceMemoryBytes(device_));
-  const double fits = available > 0 ? std::floor(available / double(kEstimatedBytesPerParticle)) : double(kMaxParticles);
+  const double available = deviceMemoryBudget(device_).bytes;
+  const double fits = available >= 0 ? std::floor(available / double(kEstimatedBytesPerParticle)) : double(kMaxParticles);
   return std::min(fits, double(kMaxParticles));
 }
 
@@ -39,12 +39,14 @@ void Simulation::checkParticleBudget(double added, const std::string& what, cons
   if (!(total <= particleBudget())) {
     const bool byMemory = settings.limits.maxParticles == 0 && particleBudget() < double(kMaxParticles);
     std::string why;
-    if (byMemory)
+    if (byMemory) {
+      const MemoryBound budget = deviceMemoryBudget(device_);
       why = "about " + gib(total * double(kEstimatedBytesPerParticle)) + " at ~" +
             std::to_string(kEstimatedBytesPerParticle) + " bytes per particle, more than the " +
-            gib(double(deviceMemoryBytes(device_))) + " of memory the device (" + deviceName(device_) +
-            ") has; use a coarser spacing or a smaller region, or set Simulation.maxParticles if the run needs "
-            "fewer bytes per particle";
+            gib(budget.bytes) + " of memory the run may take on the " + deviceName(device_) + " (set by " +
+            budget.source + "); use a coarser spacing or a smaller region, or set Simulation.maxParticles if the "
+            "run needs fewer bytes per particle";
+    }
     else if (settings.limits.maxParticles > 0 && settings.limits.maxParticles < kMaxParticles)
       why = "more than Simulation.maxParticles = " + std::to_string(settings.limits.maxParticles) +
             "; raise it (up to " + std::to_string(kMaxParticles) + ") or use a coarser spacing";

@@ -122,8 +122,9 @@ class Simulation final : public CheckpointState, public FrameSource {
   // would hold more than particleBudget(). `added` is a double so that no
   // count can overflow on its way here.
   void checkParticleBudget(double added, const std::string& what, const std::string& where) const;
-  // Simulation.maxParticles, or as many as the device's memory holds at
-  // about kEstimatedBytesPerParticle each (Doc/performance.md measures
+  // Simulation.maxParticles, or as many as the memory the run may take on
+  // its device (deviceMemoryBudget: the process's limits on the CPU, the
+  // free memory on the GPU) holds at about kEstimatedBytesPerParticle each (Doc/performance.md measures
   // 316-913), at most kMaxParticles.
   double particleBudget() const;
   // Refuses a run to `endTime` whose emitters (Module::plannedParticles)

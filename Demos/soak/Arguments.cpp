@@ -29,7 +29,8 @@ const char* kUsage =
     "  --time T                  simulated seconds (instead of the scene's duration)\n"
     "  --set Element.attr=value  override a scene value (Element[i].attr for repeated elements)\n"
     "  --plugin PATH             load a plugin library (repeatable)\n"
-    "  --threads N               CPU threads (default: all cores)\n"
+    "  --threads N               CPU threads (default: OMP_NUM_THREADS, else the CPUs this\n"
+    "                            process may use: affinity, SLURM_CPUS_PER_TASK, cgroup cpu.max)\n"
     "  --profile                 print mean milliseconds per stage at the end\n"
     "  --quiet                   no progress output\n"
     "  --check-stages            check for NaN and runaway speed after every stage, not once per\n"
@@ -40,7 +41,7 @@ const char* kUsage =
     "                            may extend it; the scene is DIR's scene.xml, unchanged\n"
     "\n"
     "exit codes: 0 success, 1 internal error, 2 bad input (nothing written),\n"
-    "            3 device unavailable or failed, 4 simulation unstable,\n"
+    "            3 device unavailable, failed or out of memory, 4 simulation unstable,\n"
     "            5 a write failed (disk full, read-only, folder removed, permission, I/O),\n"
     "            130 interrupted\n";
 

@@ -81,7 +81,12 @@ void printProfile(const Simulation& sim) {
 }  // namespace
 
 int runCommand(const RunArguments& args) {
+  // Threads: --threads, else OMP_NUM_THREADS, else the CPUs this process may
+  // use (affinity, SLURM_CPUS_PER_TASK, the cgroup's cpu.max; ProcessLimits.h).
+  std::string threadSource = "--threads";
   if (args.threads > 0) omp_set_num_threads(args.threads);
+  else if (const char* env = std::getenv("OMP_NUM_THREADS"); env && *env) threadSource = "OMP_NUM_THREADS";
+  else omp_set_num_threads(usableCpuCount(&threadSource));
   // Everything that can fail because of the input happens before the output
   // folder is touched (PrepareRun.h).
   PreparedRun run = prepareRun(args);
@@ -110,6 +115,8 @@ int runCommand(const RunArguments& args) {
     std::fprintf(stderr, "soak: %s on %s%s, %d particles, dt=%g s, %d frames -> %s\n", scene.path().c_str(),
                  deviceName(device), device == Device::Cuda ? (" (" + cudaDeviceDescription() + ")").c_str() : "",
                  sim.particles.count(), double(sim.settings.timeStep), planned, out.c_str());
+    if (device == Device::Cpu)
+      std::fprintf(stderr, "soak: %d CPU threads (from %s)\n", omp_get_max_threads(), threadSource.c_str());
     const SimulationSettings& set = sim.settings;
     if (!sim.cloth.empty() && set.clothSubstepTravel > 0.f)
       std::fprintf(stderr, "soak: cloth solve: %d to %d dependent phases per step (sub-steps from the cloth's speed)\n",
@@ -164,6 +171,17 @@ int runCommand(const RunArguments& args) {
                  writer.framesWritten() - 1, (writer.framesWritten() - 1) / sim.settings.frameRate, out.c_str(),
                  sim.checkStages ? "" : "; run again with --check-stages to name the stage where it starts");
     return kExitUnstable;
+  } catch (const DeviceError& e) {
+    // Out of device memory or a failed kernel mid-run: the frames before it
+    // are whole and kept, and a checkpoint (if any) resumes the run.
+    writer.flush();
+    progress.finish();
+    const int kept = writer.framesWritten();
+    std::fprintf(stderr, "soak: device error: %s\n      frames 0-%d are whole and listed in %s\n", e.what(), kept - 1,
+                 out.c_str());
+    if (pathExists(out + "/" + kCheckpointFile))
+      std::fprintf(stderr, "      once the device has room, continue with: soak run --resume %s\n", out.c_str());
+    return kExitDevice;
   }
   progress.finish();
   std::signal(SIGINT, SIG_DFL);
