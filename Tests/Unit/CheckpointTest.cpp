@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <random>
 #include <sstream>
 #include <thread>
 #include <vector>
@@ -129,6 +130,61 @@ TEST(Checkpoint, ResumeAfterAKillWritesFramesBitIdenticalToAnUninterruptedRun) {
   SoakResult r = runSoak("run --resume " + killed + " --device cpu");
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("resuming"), std::string::npos) << r.output;
+  expectSameFrames(whole, killed, frames);
+}
+
+// Chaos: a checkpointing run killed with SIGKILL at random moments, twelve
+// times, each time resumed (or, killed before its first checkpoint, started
+// again), ends with frames bit-identical to an uninterrupted run's. The
+// moments are drawn from a seed the test prints (SOAK_CHAOS_SEED repeats it).
+TEST(Checkpoint, TwelveKillsAtRandomMomentsEndInFramesBitIdenticalToAnUninterruptedRun) {
+  const std::string scene = sceneFile();
+  const std::string whole = freshTempPath("chaos_whole"), killed = freshTempPath("chaos_killed");
+  const int frames = 40, kKills = 12;
+  const auto start = std::chrono::steady_clock::now();
+  SoakResult a = runSoak("run " + scene + " -o " + whole + " --frames " + std::to_string(frames) +
+                         " --device cpu --quiet");
+  ASSERT_EQ(a.code, 0) << a.output;
+  const double wholeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  const char* seedText = std::getenv("SOAK_CHAOS_SEED");
+  const unsigned seed = seedText ? unsigned(std::strtoul(seedText, nullptr, 10)) : std::random_device{}();
+  std::printf("chaos: seed %u (SOAK_CHAOS_SEED=%u repeats these moments), uninterrupted run %.0f ms\n", seed, seed,
+              wholeMs);
+  std::mt19937 rng(seed);
+  // Each life lasts up to a third of the whole run, so most end in a kill
+  // and the run still moves on between them.
+  std::uniform_real_distribution<double> lifeMs(0.0, wholeMs / 3.0);
+  int kills = 0, restarts = 0, resumes = 0;
+  for (int life = 0; life < 200; ++life) {
+    const bool resume = pathExists(killed + "/checkpoint.soak");
+    const pid_t pid = resume ? startSoak({"run", "--resume", killed, "--device", "cpu", "--quiet"})
+                             : startSoak({"run", scene, "-o", killed, "--frames", std::to_string(frames), "--device",
+                                          "cpu", "--quiet", "--checkpoint-every", "2", "--overwrite"});
+    (resume ? resumes : restarts) += life > 0;
+    if (kills < kKills) {
+      std::this_thread::sleep_for(std::chrono::microseconds(int(1000.0 * lifeMs(rng))));
+      int status = 0;
+      if (waitpid(pid, &status, WNOHANG) == 0) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        ASSERT_TRUE(WIFSIGNALED(status));
+        ++kills;
+        for (const std::string& f : pvdFiles(killed + "/water.pvd"))
+          ASSERT_NE(readWholeFile(killed + "/" + f).find("</VTKFile>"), std::string::npos)
+              << f << " is listed but not whole after kill " << kills;
+        continue;
+      }
+      ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "life " << life << " failed on its own";
+    } else {
+      ASSERT_EQ(exitCodeOf(pid), 0) << "the last life failed";
+    }
+    if (pvdFiles(killed + "/water.pvd").size() == std::size_t(frames + 1)) break;
+  }
+  std::printf("chaos: %d kills, %d resumes, %d fresh starts (killed before the first checkpoint)\n", kills, resumes,
+              restarts);
+  EXPECT_EQ(kills, kKills);
+  EXPECT_GT(resumes, 0);
   expectSameFrames(whole, killed, frames);
 }
 
