@@ -202,7 +202,9 @@ PointRecord recordEnd(const SweepLayout& layout, const std::string& id, PointRec
       if (line.rfind("soak:", 0) == 0) r.error = line.substr(line.rfind("soak: error: ", 0) == 0 ? 13 : 6);
     if (!WIFEXITED(waitStatus))
       r.error = "killed by signal " + std::to_string(WTERMSIG(waitStatus)) + (r.error.empty() ? "" : "; " + r.error);
-    if (r.error.empty()) r.error = "exit code " + std::to_string(r.exitCode) + " without a message (see log.txt)";
+    if (r.error.empty())
+      r.error = stopped ? "stopped by a signal; the next sweep run resumes it from its checkpoint"
+                        : "exit code " + std::to_string(r.exitCode) + " without a message (see log.txt)";
     if (r.error.size() > 500) r.error = r.error.substr(0, 500) + "...";
   }
   writePointRecord(layout.record(id), r);

@@ -40,7 +40,7 @@ column_of() { head -n 1 "$1" | tr ',' '\n' | grep -n -x "$2" | cut -d: -f1; }
 # The manifest's field $2 of the row of point $1.
 field() { awk -F, -v id="$1" -v col="$(column_of "$SWEEP/manifest.csv" "$2")" '$1 == id { print $col }' "$SWEEP/manifest.csv"; }
 
-FRAMES=24
+FRAMES=60
 SWEEP="$WORK/sweep"
 cat > "$WORK/sweep.txt" <<EOF
 # 8 nozzle speeds and one a run refuses (faster than Simulation.maxSpeed = 50 m/s)
@@ -67,11 +67,13 @@ victim=$(awk -F, '$3 == "1.5" { print $1 }' "$SWEEP/manifest.csv")
 task=$(($(grep -n -x "$victim" "$SWEEP/slurm/batch-000.txt" | cut -d: -f1) - 1))
 run="$SWEEP/points/$victim/run"
 for _ in $(seq 240); do
-  [ -f "$run/checkpoint.soak" ] && [ -f "$run/water/water_000006.vtu" ] && break
+  [ -f "$run/checkpoint.soak" ] && [ -f "$run/water/water_000004.vtu" ] && break
   sleep 0.5
 done
 [ -f "$run/checkpoint.soak" ] || fail "point $victim (task ${job}_$task) never wrote a checkpoint"
 [ -f "$run/water/water_0000$FRAMES.vtu" ] && fail "point $victim ended before it could be cancelled"
+"$SOAK" sweep status "$SWEEP" | grep -q "^$victim .* running " ||
+  fail "the point under way is not running in the status: $("$SOAK" sweep status "$SWEEP")"
 scancel "${job}_$task" || fail "scancel ${job}_$task failed"
 echo "cancelled task ${job}_$task (point $victim) mid-run"
 wait_for_job "$job" 240
@@ -82,7 +84,7 @@ wait_for_job "$job" 240
 bad=$(awk -F, '$3 == "80" { print $1 }' "$SWEEP/manifest.csv")
 [ "$(field "$bad" status)" = failed ] || fail "the point of 80 m/s is '$(field "$bad" status)', not failed"
 [ "$(field "$bad" exit_code)" = 4 ] || fail "the point of 80 m/s exited $(field "$bad" exit_code), not 4 (unstable)"
-grep "^$bad," "$SWEEP/manifest.csv" | grep -q "speed" || fail "the manifest does not give the bad point's error: $(grep "^$bad," "$SWEEP/manifest.csv")"
+grep "^$bad," "$SWEEP/manifest.csv" | grep -q "maxSpeed" || fail "the manifest does not give the bad point's error: $(grep "^$bad," "$SWEEP/manifest.csv")"
 done_count=$(awk -F, 'NR > 1 && $4 == "done"' "$SWEEP/manifest.csv" | wc -l)
 [ "$done_count" -eq 7 ] || fail "$done_count points done after the first submission, not 7: $(cat "$SWEEP/manifest.csv")"
 

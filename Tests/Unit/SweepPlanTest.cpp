@@ -3,6 +3,7 @@
 // and planning again keeps what is there.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 
 #include "Base/Error.h"
@@ -46,7 +47,7 @@ TEST(SweepPlan, RangesExpandToTheirValues) {
 TEST(SweepPlan, MistakesNameTheFileAndLine) {
   EXPECT_EQ(errorOf("scene = a.xml\n\nvary X.y = lin 1 2 3\n").rfind("sweep.txt:3: unknown range 'lin'", 0), 0u)
       << errorOf("scene = a.xml\n\nvary X.y = lin 1 2 3\n");
-  EXPECT_NE(errorOf("scene = a.xml\nvary X.y = lin 1 2 3\n").find("did you mean 'linear'"), std::string::npos);
+  EXPECT_NE(errorOf("scene = a.xml\nvary X.y = linar 1 2 3\n").find("did you mean 'linear'"), std::string::npos);
   EXPECT_EQ(errorOf("scene = a.xml\nvary X.y = log -1 2 3\n").rfind("sweep.txt:2: 'log' needs FROM and TO above zero", 0),
             0u);
   EXPECT_EQ(errorOf("scene = a.xml\nvary X.y = linear 1 2 2.5\n").rfind("sweep.txt:2: linear COUNT must be an integer", 0),
