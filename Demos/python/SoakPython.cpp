@@ -17,6 +17,7 @@
 #include "Simulation/LoadedScene.h"
 #include "Simulation/Runner.h"
 #include "SimulationArrays.h"
+#include "SweepPython.h"
 
 namespace py = pybind11;
 using namespace soak;
@@ -236,6 +237,8 @@ PYBIND11_MODULE(soak, m) {
                       ("run interrupted; " + std::to_string(e.framesWritten) + " frames were written").c_str());
     }
   });
+
+  addSweepFunctions(m);
 
   m.def("cuda_available", [] { return cudaDeviceAvailable(); }, "Whether the CUDA backend is built and a GPU is present.");
 

@@ -5,7 +5,8 @@
 # clang and its runtime are for the sanitizer build and the fuzzers (Doc/reliability.md);
 # pybind11, numpy and pytest for the Python module (Doc/python.md), OpenVDB (whose CMake
 # module also asks for Boost.Iostreams) for the .vdb export (Doc/output.md); Blender for the
-# tests of the Blender add-on (Demos/blender, Doc/output.md "Blender").
+# tests of the Blender add-on (Demos/blender, Doc/output.md "Blender"); Slurm and munge for
+# the test that runs `soak sweep` on a one-node Slurm (Doc/sweeps.md).
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
@@ -15,6 +16,7 @@ packages=(
   pybind11-dev python3-pybind11 python3-numpy python3-pytest libopenvdb-dev libboost-iostreams-dev
   clang libclang-rt-14-dev libomp-dev
   blender
+  slurmctld slurmd slurm-client munge
 )
 missing=()
 for p in "${packages[@]}"; do

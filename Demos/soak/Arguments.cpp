@@ -15,6 +15,8 @@ const char* kUsage =
     "commands:\n"
     "  run SCENE.xml [options]   simulate a scene and write ParaView files\n"
     "  run --resume DIR [opts]   continue a run from its last checkpoint (DIR/checkpoint.soak)\n"
+    "  sweep plan|run|status|collect   many runs of one scene over ranges of its values, on\n"
+    "                            this machine or as Slurm job arrays (soak sweep help)\n"
     "  params                    print every scene element and parameter (Markdown)\n"
     "  version                   print the version and the backends built\n"
     "  help                      this text\n"

@@ -7,6 +7,7 @@
 #include "Arguments.h"
 #include "Base/Error.h"
 #include "RunCommand.h"
+#include "SweepCommand.h"
 
 int main(int argc, char** argv) {
   using namespace soak::cli;
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   try {
     if (cmd == "run") return runCommand(parseRunArguments(rest));
     if (cmd == "params") return paramsCommand(rest);
+    if (cmd == "sweep") return sweepCommand(rest);
     if (cmd == "version" || cmd == "--version") return versionCommand();
     std::fprintf(stderr, "soak: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);
     return kExitInput;
