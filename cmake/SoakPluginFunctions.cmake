@@ -15,7 +15,7 @@ endfunction()
 function(soak_target_options target)
   target_compile_options(${target} PRIVATE
     $<$<COMPILE_LANGUAGE:CXX>:-Wall -Wextra>
-    $<$<COMPILE_LANGUAGE:CUDA>:--extended-lambda --expt-relaxed-constexpr -Xcompiler=-fopenmp -Xcompiler=-Wall --diag-suppress=20012>)
+    $<$<COMPILE_LANGUAGE:CUDA>:--extended-lambda --expt-relaxed-constexpr --default-stream per-thread -Xcompiler=-fopenmp -Xcompiler=-Wall --diag-suppress=20012>)
   if(SOAK_WITH_CUDA)
     target_compile_definitions(${target} PRIVATE SOAK_WITH_CUDA=1)
   endif()

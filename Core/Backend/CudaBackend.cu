@@ -5,7 +5,9 @@
 #include <cub/cub.cuh>
 #include <thrust/iterator/transform_iterator.h>
 #include <cstdio>
+#include <map>
 #include <string>
+#include <tuple>
 
 #include "Backend/CudaBackend.h"
 #include "Base/Error.h"
@@ -23,6 +25,7 @@ struct Scratch {
   std::size_t bytes = 0;
   void* get(std::size_t need) {
     if (need > bytes) {
+      graphPause();
       if (ptr) cudaFreeAsync(ptr, 0);
       bytes = need + need / 2;
       check(cudaMallocAsync(&ptr, bytes, 0), "scratch allocation");
@@ -37,7 +40,10 @@ Scratch& scratch() {
 template <class T>
 struct HostValue {
   T* dev = nullptr;
-  HostValue() { check(cudaMalloc(&dev, sizeof(T)), "result allocation"); }
+  HostValue() {
+    graphPause();
+    check(cudaMalloc(&dev, sizeof(T)), "result allocation");
+  }
   ~HostValue() { cudaFree(dev); }
   T read() {
     T v{};
@@ -45,6 +51,7 @@ struct HostValue {
     return v;
   }
 };
+__global__ void writeFloat(float* out, float v) { *out = v; }
 struct MaxOp {
   __device__ float operator()(float a, float b) const { return a > b ? a : b; }
 };
@@ -87,7 +94,119 @@ std::size_t freeMemoryBytes() {
   return cudaMemGetInfo(&free, &total) == cudaSuccess ? free : 0;
 }
 
-void synchronize() { check(cudaDeviceSynchronize(), "synchronize"); }
+// Step graphs (CudaBackend.h): the stepping thread's captures. Each
+// segment of a step (the work between two host waits) is captured, and the
+// executable graph kept for its place (key, segment, node count) is updated
+// with the new capture's parameters; one that cannot be updated (another
+// shape: a sub-step more) is instantiated anew.
+namespace {
+struct StepGraphs {
+  bool active = false, capturing = false;
+  int key = 0, segment = 0, holds = 0;
+  std::map<std::tuple<int, int, std::size_t>, cudaGraphExec_t> execs;
+  GraphCounters counters;
+};
+StepGraphs& stepGraphs() {
+  thread_local StepGraphs g;  // a step is captured on the thread that runs it
+  return g;
+}
+constexpr std::size_t kMostKeptGraphs = 64;
+}  // namespace
+
+void graphBeginStep(int key) {
+  StepGraphs& g = stepGraphs();
+  g.active = true;
+  g.key = key;
+  g.segment = 0;
+}
+
+void graphResume() {
+  StepGraphs& g = stepGraphs();
+  if (!g.active || g.capturing || g.holds > 0) return;
+  check(cudaStreamBeginCapture(cudaStreamPerThread, cudaStreamCaptureModeThreadLocal), "beginning a step graph");
+  g.capturing = true;
+}
+
+void graphPause() {
+  StepGraphs& g = stepGraphs();
+  if (!g.capturing) return;
+  g.capturing = false;
+  cudaGraph_t graph = nullptr;
+  check(cudaStreamEndCapture(cudaStreamPerThread, &graph), "capturing a step graph");
+  std::size_t nodes = 0;
+  cudaGraphGetNodes(graph, nullptr, &nodes);
+  if (nodes == 0) {
+    cudaGraphDestroy(graph);
+    return;
+  }
+  const auto place = std::make_tuple(g.key, g.segment++, nodes);
+  auto it = g.execs.find(place);
+  bool updated = false;
+  if (it != g.execs.end()) {
+    cudaGraphExecUpdateResultInfo info{};
+    updated = cudaGraphExecUpdate(it->second, graph, &info) == cudaSuccess;
+    if (!updated) {
+      cudaGetLastError();
+      cudaGraphExecDestroy(it->second);
+      g.execs.erase(it);
+    }
+  }
+  if (updated) {
+    ++g.counters.updates;
+  } else {
+    if (g.execs.size() >= kMostKeptGraphs) {
+      for (auto& e : g.execs) cudaGraphExecDestroy(e.second);
+      g.execs.clear();
+    }
+    cudaGraphExec_t exec = nullptr;
+    const cudaError_t e = cudaGraphInstantiate(&exec, graph, 0);
+    if (e != cudaSuccess) cudaGraphDestroy(graph);
+    check(e, "instantiating a step graph");
+    it = g.execs.emplace(place, exec).first;
+    ++g.counters.instantiations;
+  }
+  cudaGraphDestroy(graph);
+  g.counters.nodes += nodes;
+  ++g.counters.launches;
+  check(cudaGraphLaunch(it->second, cudaStreamPerThread), "launching a step graph");
+}
+
+void graphEndStep() {
+  StepGraphs& g = stepGraphs();
+  g.holds = 0;
+  graphPause();
+  g.active = false;
+}
+
+void graphAbandonStep() noexcept {
+  StepGraphs& g = stepGraphs();
+  if (g.capturing) {
+    cudaGraph_t graph = nullptr;
+    cudaStreamEndCapture(cudaStreamPerThread, &graph);
+    if (graph) cudaGraphDestroy(graph);
+    cudaGetLastError();
+  }
+  g.capturing = false;
+  g.active = false;
+  g.holds = 0;
+}
+
+void graphHold(bool hold) {
+  StepGraphs& g = stepGraphs();
+  if (hold) {
+    graphPause();
+    ++g.holds;
+  } else if (g.holds > 0) {
+    --g.holds;
+  }
+}
+
+GraphCounters graphCounters() { return stepGraphs().counters; }
+
+void synchronize() {
+  graphPause();
+  check(cudaDeviceSynchronize(), "synchronize");
+}
 
 // Stream-ordered allocation (cudaMallocAsync on the default stream, where
 // all our work runs): freeing a buffer that grew does not wait for the
@@ -105,6 +224,7 @@ void* allocate(std::size_t bytes) {
     return true;
   }();
   (void)poolKept;
+  graphPause();
   void* p = nullptr;
   cudaError_t e = cudaMallocAsync(&p, bytes, 0);
   if (e != cudaSuccess) {
@@ -117,13 +237,26 @@ void* allocate(std::size_t bytes) {
   }
   return p;
 }
-void release(void* p) noexcept { cudaFreeAsync(p, 0); }
+void release(void* p) noexcept {
+  try {
+    graphPause();
+  } catch (...) {
+  }
+  cudaFreeAsync(p, 0);
+}
 
+// Copies between device buffers and fills are stream-ordered (no wait), so
+// a step graph captures them; copies from or to the host wait.
 void copy(void* dst, const void* src, std::size_t bytes, int kind) {
-  cudaMemcpyKind k = kind == 0 ? cudaMemcpyHostToDevice : kind == 1 ? cudaMemcpyDeviceToHost : cudaMemcpyDeviceToDevice;
+  if (kind == 2) {
+    check(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyDeviceToDevice, 0), "memory copy");
+    return;
+  }
+  graphPause();
+  cudaMemcpyKind k = kind == 0 ? cudaMemcpyHostToDevice : cudaMemcpyDeviceToHost;
   check(cudaMemcpy(dst, src, bytes, k), "memory copy");
 }
-void fill(void* dst, int value, std::size_t bytes) { check(cudaMemset(dst, value, bytes), "memset"); }
+void fill(void* dst, int value, std::size_t bytes) { check(cudaMemsetAsync(dst, value, bytes, 0), "memset"); }
 void checkLaunch(const char* what) { check(cudaGetLastError(), what); }
 
 double reduceSum(const float* x, int n) {
@@ -145,8 +278,8 @@ float reduceMax(const float* x, int n) {
 }
 void reduceMaxInto(const float* x, int n, float* out) {
   if (n <= 0) {
-    const float identity = -3.0e38f;
-    check(cudaMemcpyAsync(out, &identity, sizeof(float), cudaMemcpyHostToDevice, 0), "reduceMaxInto");
+    writeFloat<<<1, 1>>>(out, -3.0e38f);  // a kernel, not a copy from the stack: graphs replay it
+    check(cudaGetLastError(), "reduceMaxInto");
     return;
   }
   std::size_t bytes = 0;
@@ -163,6 +296,7 @@ float reduceMin(const float* x, int n) {
 }
 int exclusiveScan(const int* in, int* out, int n) {
   if (n <= 0) return 0;
+  graphPause();
   int last = 0;
   check(cudaMemcpy(&last, in + n - 1, sizeof(int), cudaMemcpyDeviceToHost), "scan");
   std::size_t bytes = 0;
@@ -200,6 +334,7 @@ void sortPairs(std::uint32_t* keys, std::uint32_t* values, int n, int keyBits) {
 }
 
 void* allocatePinned(std::size_t bytes) {
+  graphPause();
   void* p = nullptr;
   cudaError_t e = cudaMallocHost(&p, bytes);
   if (e != cudaSuccess) {
@@ -210,14 +345,21 @@ void* allocatePinned(std::size_t bytes) {
   return p;
 }
 void releasePinned(void* p) noexcept {
-  if (p) cudaFreeHost(p);
+  if (!p) return;
+  try {
+    graphPause();
+  } catch (...) {
+  }
+  cudaFreeHost(p);
 }
 
 namespace {
-// The copy stream: non-blocking, so that the legacy default stream (the
-// compute stream) and it never wait for each other implicitly.
+// The compute stream is the stepping thread's default stream (the CUDA
+// sources are compiled with --default-stream per-thread, so that a step can
+// be captured into a graph). The copy stream is non-blocking: it and the
+// compute stream never wait for each other implicitly.
 cudaStream_t stream(int which) {
-  if (which == 0) return 0;
+  if (which == 0) return cudaStreamPerThread;
   static cudaStream_t copyStream = [] {
     cudaStream_t s = nullptr;
     check(cudaStreamCreateWithFlags(&s, cudaStreamNonBlocking), "creating the copy stream");
@@ -228,6 +370,7 @@ cudaStream_t stream(int which) {
 }  // namespace
 
 void* createFence() {
+  graphPause();
   cudaEvent_t e = nullptr;
   check(cudaEventCreateWithFlags(&e, cudaEventDisableTiming), "creating a fence");
   return e;
@@ -241,13 +384,17 @@ void recordFence(void* fence, int which) {
 void streamWaitForFence(int which, void* fence) {
   check(cudaStreamWaitEvent(stream(which), static_cast<cudaEvent_t>(fence), 0), "waiting for a fence on a stream");
 }
-void hostWaitForFence(void* fence) { check(cudaEventSynchronize(static_cast<cudaEvent_t>(fence)), "waiting for a fence"); }
+void hostWaitForFence(void* fence) {
+  graphPause();
+  check(cudaEventSynchronize(static_cast<cudaEvent_t>(fence)), "waiting for a fence");
+}
 void copyAsync(void* dst, const void* src, std::size_t bytes, int kind, int which) {
   cudaMemcpyKind k = kind == 0 ? cudaMemcpyHostToDevice : kind == 1 ? cudaMemcpyDeviceToHost : cudaMemcpyDeviceToDevice;
   check(cudaMemcpyAsync(dst, src, bytes, k, stream(which)), "asynchronous memory copy");
 }
 
 void* createMark() {
+  graphPause();
   cudaEvent_t e = nullptr;
   check(cudaEventCreate(&e), "creating a timing event");
   return e;

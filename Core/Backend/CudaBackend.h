@@ -48,6 +48,24 @@ void hostWaitForFence(void* fence);
 // A copy queued on `stream` (kind as for copy); the host does not wait.
 void copyAsync(void* dst, const void* src, std::size_t bytes, int kind, int stream);
 
+// Step graphs: between graphBeginStep and graphEndStep, the work queued on
+// the compute stream is captured into CUDA graphs and launched as one graph
+// per segment, a segment ending where the host waits, allocates or copies
+// (graphPause, called by those functions; graphResume, called before each
+// launch, starts the next). Steps of the same `key` (plain or maintenance)
+// reuse their executable graphs, updated with each capture's parameters.
+// graphHold(true) pauses and keeps capture off until graphHold(false).
+struct GraphCounters {
+  unsigned long long launches = 0, updates = 0, instantiations = 0, nodes = 0;
+};
+void graphBeginStep(int key);
+void graphResume();
+void graphPause();
+void graphEndStep();
+void graphAbandonStep() noexcept;
+void graphHold(bool hold);
+GraphCounters graphCounters();
+
 // Timing marks on the device's queue (CUDA events), for DeviceMarks.
 void* createMark();
 void destroyMark(void* mark) noexcept;

@@ -16,6 +16,13 @@ bool available(std::string* why) {
 std::string description() { return {}; }
 std::size_t memoryBytes() { return 0; }
 std::size_t freeMemoryBytes() { return 0; }
+void graphBeginStep(int) {}
+void graphResume() {}
+void graphPause() {}
+void graphEndStep() {}
+void graphAbandonStep() noexcept {}
+void graphHold(bool) {}
+GraphCounters graphCounters() { return {}; }
 void synchronize() {}
 void* allocate(std::size_t) { refuse(); }
 void release(void*) noexcept {}

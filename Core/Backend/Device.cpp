@@ -55,9 +55,23 @@ Device resolveDevice(const std::string& request) {
 }
 
 unsigned long long hostWaits() { return g_hostWaits.load(); }
-void countHostWait() { ++g_hostWaits; }
+void countHostWait() {
+  ++g_hostWaits;
+  cuda::graphPause();  // a step graph's segment ends where the host waits
+}
 unsigned long long launches() { return g_launches.load(std::memory_order_relaxed); }
-void countLaunch() { g_launches.fetch_add(1, std::memory_order_relaxed); }
+void countLaunch() {
+  g_launches.fetch_add(1, std::memory_order_relaxed);
+  cuda::graphResume();  // inside a step graph, the launch is captured
+}
+
+void cudaGraphBeginStep(int key) { cuda::graphBeginStep(key); }
+void cudaGraphEndStep() { cuda::graphEndStep(); }
+void cudaGraphAbandonStep() noexcept { cuda::graphAbandonStep(); }
+StepGraphCounters stepGraphCounters() {
+  const cuda::GraphCounters c = cuda::graphCounters();
+  return {c.launches, c.updates, c.instantiations, c.nodes};
+}
 
 void synchronize(Device d) {
   countHostWait();

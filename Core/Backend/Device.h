@@ -62,6 +62,19 @@ MemoryBound deviceMemoryBudget(Device d);
 // Bytes of device memory currently allocated through deviceAllocate (per device).
 std::size_t deviceBytesInUse(Device d);
 
+// Step graphs (GPU; CudaBackend.h): between begin and end, the kernels a
+// step queues are captured into CUDA graphs, one per stretch of work between
+// two host waits, and replayed; `key` keeps plain (0) and maintenance (1)
+// steps' graphs apart. abandon ends a capture an exception left open. The
+// counters: graphs launched, updated in place, instantiated, and their nodes.
+void cudaGraphBeginStep(int key);
+void cudaGraphEndStep();
+void cudaGraphAbandonStep() noexcept;
+struct StepGraphCounters {
+  unsigned long long launches = 0, updates = 0, instantiations = 0, nodes = 0;
+};
+StepGraphCounters stepGraphCounters();
+
 // Throws DeviceError naming `what` if the last kernel launch failed (CUDA only).
 void checkLastLaunch(Device d, const char* what);
 

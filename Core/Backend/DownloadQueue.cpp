@@ -104,6 +104,9 @@ std::unique_ptr<DownloadQueue::Transfer> DownloadQueue::download(const std::vect
     t->waited_ = true;
     return t;
   }
+  // Two streams and fences: never captured into a step graph (the segment
+  // before is launched, these are queued after it).
+  cuda::graphHold(true);
   // The previous download's copy out of the staging block must be done
   // before the block is written, resized or freed.
   cuda::streamWaitForFence(0, copiedOut_);
@@ -118,6 +121,7 @@ std::unique_ptr<DownloadQueue::Transfer> DownloadQueue::download(const std::vect
   if (total > 0) cuda::copyAsync(t->host_, staging_.data(), total, 1, 1);
   cuda::recordFence(t->done_, 1);
   cuda::recordFence(copiedOut_, 1);
+  cuda::graphHold(false);
   t->waited_ = false;
   return t;
 }

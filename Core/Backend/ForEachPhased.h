@@ -98,6 +98,7 @@ bool launchCooperative(K kernel, long long threads, int& maxBlocks, void** args,
   const int blocks =
       static_cast<int>(std::min<long long>((threads + kForEachBlockSize - 1) / kForEachBlockSize, maxBlocks));
   if (blocks <= 0) return false;
+  countLaunch();
   if (cudaLaunchCooperativeKernel(reinterpret_cast<void*>(kernel), dim3(blocks), dim3(kForEachBlockSize), args, 0,
                                   nullptr) != cudaSuccess) {
     cudaGetLastError();  // clear the refusal
@@ -105,7 +106,6 @@ bool launchCooperative(K kernel, long long threads, int& maxBlocks, void** args,
     return false;
   }
   checkLastLaunch(device, what);
-  countLaunch();
   return true;
 }
 #endif

@@ -259,6 +259,10 @@ void registerCoreElements(ModuleRegistry& r) {
         .vector("gravity", &S::gravity, "m/s^2", "Gravitational acceleration; +y is up by default.")
         .real("maxSpeed", &S::maxSpeed, "m/s", "A particle faster than this is reported as an instability.", 0.0,
               1e9, true)
+        .boolean("cudaGraph", &S::cudaGraph,
+                 "GPU: capture each step's kernels into CUDA graphs, one per stretch of work between two waits of the "
+                 "host, and replay them, updated with the step's parameters (Doc/design.md, \"Step graphs\"); false "
+                 "queues every kernel from the host. No effect on the CPU.")
         .integer("clothIterations", &S::clothIterations,
                  "Cloth solver iterations n_s per step (Eq. 5), per cloth sub-step. 0: the solver's own (12 for "
                  "chebyshev and xpbd cloth, the paper's 8 for a scene of pbd cloth only).", 0, 1000)

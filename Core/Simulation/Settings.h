@@ -43,6 +43,7 @@ struct SimulationSettings {
   int couplingPasses = 2;      // passes of the water-triangle constraint per step (n_s of Eq. 5 for it)
   int contactPasses = 2;       // passes of cloth contact (self and cloth-cloth) per step
   int crossingGuardRounds = 0; // rounds of the cloth crossing guard per sub-step (Cloth/CrossingGuard.h)
+  bool cudaGraph = true;       // GPU: each step's work replayed as CUDA graphs (Doc/design.md, "Step graphs")
   Vec3 domainMin{-1e3f, -1e3f, -1e3f};  // water leaving this box is drained
   Vec3 domainMax{1e3f, 1e3f, 1e3f};
   std::optional<WaterSurfaceSettings> surface;  // a water surface mesh per frame where set (<WaterSurface>)

@@ -99,6 +99,18 @@ void Simulation::step(bool profile) {
       const Instability s = findInstability(*this, instabilityScratch_, stage);
       if (s.found) throw InstabilityError(s, describeInstability(s, settings.maxSpeed));
     });
+  } else if (device_ == Device::Cuda && settings.cudaGraph && !profile) {
+    // The step's kernels are captured and replayed as graphs, one per
+    // stretch between host waits; plain and maintenance steps keep their
+    // own (CudaBackend.h). --profile and --check-stages queue them one by one.
+    cudaGraphBeginStep(maintenanceStep() ? 1 : 0);
+    try {
+      pipeline.run(*this, device_, profile);
+    } catch (...) {
+      cudaGraphAbandonStep();
+      throw;
+    }
+    cudaGraphEndStep();
   } else {
     pipeline.run(*this, device_, profile);
   }

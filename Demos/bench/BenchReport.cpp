@@ -71,10 +71,11 @@ void printTable(const std::vector<Result>& results, const std::string& deviceTex
   }
   std::printf("\nlaunches: operations queued on the device per plain step (launches()); one step at a time from an\n"
               "idle device (median of up to 32): the host's time to queue it, and the step's time to its end\n\n");
-  std::printf("| scene | launches/step | enqueue ms | alone ms | total ms |\n|---|---|---|---|---|\n");
+  std::printf("| scene | launches/step | graphs/step | graphs instantiated/step | enqueue ms | alone ms | total ms |\n"
+              "|---|---|---|---|---|---|---|\n");
   for (const Result& r : results)
-    std::printf("| %s | %.1f | %.3f | %.3f | %.3f |\n", r.c.name.c_str(), r.launchesPerStep, r.enqueueMs, r.aloneMs,
-                r.totalMs);
+    std::printf("| %s | %.1f | %.2f | %.3f | %.3f | %.3f | %.3f |\n", r.c.name.c_str(), r.launchesPerStep,
+                r.graphsPerStep, r.instantiationsPerStep, r.enqueueMs, r.aloneMs, r.totalMs);
   std::printf("\ncloth: dependent constraint phases per step, and edge strain after the timed steps (mean and 99th\n"
               "percentile over a sheet's warp and weft edges, a mesh's edges; the largest over the scene's cloths)\n\n");
   std::printf("| scene | cloth phases/step | cloth.solve ms | strain mean %% | strain p99 %% |\n|---|---|---|---|---|\n");
@@ -101,7 +102,7 @@ void writeJson(const std::string& file, const std::vector<Result>& results, cons
       << ", \"profiled_total_ms\": " << r.profiledMs << ", \"steps_per_s\": " << 1000.0 / r.totalMs
       << ", \"particle_steps_per_s\": " << (r.water + r.cloth) * 1000.0 / r.totalMs
       << ", \"bytes_per_particle\": " << r.bytesPerParticle << ", \"host_waits_per_step\": " << r.waitsPerStep
-      << ", \"cloth_phases_per_step\": " << r.clothPhases << ", \"strain_mean\": " << r.strainMean << ", \"strain_p99\": " << r.strainP99 << ", \"launches_per_step\": " << r.launchesPerStep << ", \"enqueue_ms\": " << r.enqueueMs
+      << ", \"cloth_phases_per_step\": " << r.clothPhases << ", \"strain_mean\": " << r.strainMean << ", \"strain_p99\": " << r.strainP99 << ", \"launches_per_step\": " << r.launchesPerStep << ", \"graphs_per_step\": " << r.graphsPerStep << ", \"graph_instantiations_per_step\": " << r.instantiationsPerStep << ", \"enqueue_ms\": " << r.enqueueMs
       << ", \"alone_ms\": " << r.aloneMs;
     if (r.c.paperTotalMs > 0)
       o << ", \"paper_total_ms\": " << r.c.paperTotalMs << ", \"paper_wetting_ms\": " << r.c.paperWettingMs

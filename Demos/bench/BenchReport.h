@@ -27,6 +27,8 @@ struct Result {
   double bytesPerParticle = 0;
   double waitsPerStep = 0;  // host waits for the device (hostWaits()) per plain step
   double launchesPerStep = 0;  // operations queued on the device (launches()) per plain step
+  double graphsPerStep = 0;    // CUDA graphs launched per plain step (Simulation.cudaGraph)
+  double instantiationsPerStep = 0;  // of them instantiated anew (not updated in place)
   double enqueueMs = 0;        // median host time to queue one step on an idle device
   double aloneMs = 0;          // median time of one step from an idle device to its end
   double clothPhases = 0;      // dependent cloth constraint phases per step (mean over the timed steps)

@@ -158,6 +158,7 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
   const double waterBefore = sim.collectStats().get("water_particles");
   synchronize(device);
   const unsigned long long waitsBefore = hostWaits(), launchesBefore = launches();
+  const StepGraphCounters graphsBefore = stepGraphCounters();
   const long long phasesBefore = sim.clothPhasesTaken();
   const double t0 = nowMs();
   for (int s = 0; s < steps; ++s) sim.step(false);
@@ -165,6 +166,9 @@ Result runCase(const Case& c, Device device, int steps, const std::vector<std::s
   r.totalMs = (nowMs() - t0) / steps;
   r.waitsPerStep = double(hostWaits() - waitsBefore - 1) / steps;
   r.launchesPerStep = double(launches() - launchesBefore) / steps;
+  const StepGraphCounters graphsAfter = stepGraphCounters();
+  r.graphsPerStep = double(graphsAfter.launches - graphsBefore.launches) / steps;
+  r.instantiationsPerStep = double(graphsAfter.instantiations - graphsBefore.instantiations) / steps;
   const double waterAfter = sim.collectStats().get("water_particles");
   const double phasesPerStep = double(sim.clothPhasesTaken() - phasesBefore) / steps;
 

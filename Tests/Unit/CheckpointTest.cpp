@@ -152,9 +152,10 @@ TEST(Checkpoint, TwelveKillsAtRandomMomentsEndInFramesBitIdenticalToAnUninterrup
   std::printf("chaos: seed %u (SOAK_CHAOS_SEED=%u repeats these moments), uninterrupted run %.0f ms\n", seed, seed,
               wholeMs);
   std::mt19937 rng(seed);
-  // Each life lasts up to a third of the whole run, so most end in a kill
-  // and the run still moves on between them.
-  std::uniform_real_distribution<double> lifeMs(0.0, wholeMs / 3.0);
+  // Each life lasts up to a tenth of the whole run: twelve of them, about
+  // half its length with the restarts, end in a kill before it is done,
+  // and with a checkpoint every 2 of its 40 frames it moves on between them.
+  std::uniform_real_distribution<double> lifeMs(0.0, wholeMs / 10.0);
   int kills = 0, restarts = 0, resumes = 0;
   for (int life = 0; life < 200; ++life) {
     const bool resume = pathExists(killed + "/checkpoint.soak");
