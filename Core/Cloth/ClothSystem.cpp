@@ -7,6 +7,7 @@
 #include "Base/Atomic.h"
 #include "Backend/Primitives.h"
 #include "Cloth/ConstraintColoring.h"
+#include "Cloth/StretchLimits.h"
 
 namespace soak {
 
@@ -99,26 +100,16 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     bendRest_.push_back(topo.bendRestAngle[b]);
     bendStiffness_.push_back(spec.bend);
   }
-  // Stretch limits (chebyshev, generated sheets): each vertex is kept within
-  // its rest distance of the vertices 2, 4, 8, ... apart along its row and
-  // its column. On a sheet cut flat that distance is the geodesic one, which
-  // no isometric motion exceeds, so a limit never resists folding or
-  // bending; it only carries the resistance to stretch across the sheet,
-  // a distance of 2^m in one Jacobi iteration instead of m hops.
-  if (jacobi && spec.stretchLimits && spec.sheetColumns > 0) {
-    const int nu = spec.sheetColumns, rows = spec.sheetRows;
-    for (int j = 0; j < rows; ++j)
-      for (int i = 0; i < nu; ++i)
-        for (int span = 2; span < std::max(nu, rows); span *= 2) {
-          const int di[4] = {span, -span, 0, 0}, dj[4] = {0, 0, span, -span};
-          for (int k = 0; k < 4; ++k) {
-            const int i2 = i + di[k], j2 = j + dj[k];
-            if (i2 < 0 || i2 >= nu || j2 < 0 || j2 >= rows) continue;
-            const int a = j * nu + i, b = j2 * nu + i2;
-            limitVertex_.push_back(first + a);
-            limitOf_.push_back({first + b, length(spec.mesh.vertices[a] - spec.mesh.vertices[b]), spec.stretchStiffness, 1});
-          }
-        }
+  // Stretch limits (chebyshev; Cloth/StretchLimits.h): along the rows and
+  // columns of a generated sheet, along the straightest lines of edges of a mesh.
+  if (jacobi && spec.stretchLimits) {
+    const std::vector<StretchLimit> limits = spec.sheetColumns > 0
+                                                 ? sheetStretchLimits(spec.mesh.vertices, spec.sheetColumns, spec.sheetRows)
+                                                 : meshStretchLimits(spec.mesh.vertices, topo);
+    for (const StretchLimit& l : limits) {
+      limitVertex_.push_back(first + l.a);
+      limitOf_.push_back({first + l.b, l.rest, spec.stretchStiffness, 1});
+    }
   }
   for (const auto& t : spec.mesh.triangles) triangles_.push_back({{first + t[0], first + t[1], first + t[2]}});
   objects_.push_back(std::move(obj));

@@ -150,7 +150,7 @@ struct ClothSpec {
   int sheetColumns = 0;           // vertices per row of a generated sheet (0: a mesh); strain is then measured
                                   // over the edges along its rows and columns
   int sheetRows = 0;              // rows of vertices of a generated sheet
-  bool stretchLimits = false;     // chebyshev, sheets: the multi-scale stretch limits (ClothSystem::add)
+  bool stretchLimits = false;     // chebyshev: the multi-scale stretch limits (Cloth/StretchLimits.h)
   std::vector<int> pinned;        // local vertex indices with inverse mass 0
   int attachCollider = -1;        // pinned vertices follow this collider (-1: fixed)
   float thickness = 0.f;          // contact distance, m (0: 0.75 x mean edge length)

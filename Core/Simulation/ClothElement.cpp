@@ -181,10 +181,12 @@ void registerClothElement(ModuleRegistry& r) {
                           "by default; for reproducing the paper: it stretches 5-10 times as much); xpbd: the same "
                           "with compliance.")
       .boolean("stretchLimits", &C::stretchLimits,
-               "chebyshev, generated sheets: keep each vertex within its rest distance of the vertices 2, 4, "
-               "8, ... apart along its row and column. They never resist folding (on a sheet cut flat no "
-               "fold lengthens them) and carry the resistance to stretch across the sheet in few "
-               "iterations.")
+               "chebyshev: keep each vertex within the rest length of the path to the vertices 2, 4, 8, ... "
+               "edges away along its lines: a generated sheet's rows and columns, a mesh's straightest lines of "
+               "edges (each turning by at most 35 degrees at a vertex). No fold or bend lengthens a path on "
+               "the cloth, so they never resist folding, draping or unrolling; they carry the resistance to "
+               "stretch across the cloth in few iterations. false: only the edges (and tethers) resist "
+               "stretch.")
       .real("stretchStiffness", &C::stretchStiffness, "", "PBD stiffness of the stretch constraint (Eq. 8).", 0.0,
             1.0)
       .real("bendStiffness", &C::bendStiffness, "", "pbd, chebyshev: stiffness of the bending constraint (Eq. 9).",

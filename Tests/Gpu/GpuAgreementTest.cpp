@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <map>
 
+#include "Support/JitteredSheet.h"
 #include "Support/TestScenes.h"
 
 using namespace soak;
@@ -176,6 +177,22 @@ TEST(GpuAgreement, ChebyshevClothWithWaterWithinCpuSensitivity) {
       "width='0.6' height='0.6' cellsU='30' cellsV='30' pinCorners='u0v0'/><WaterBlock min='-0.1 0.53 -0.1' "
       "max='0.1 0.63 0.1'/></Scene>";
   expectCudaWithinCpuSensitivity("chebyshev sheet on a ball with water", xml, 40);
+}
+
+TEST(GpuAgreement, ChebyshevMeshWithStretchLimitsWithinCpuSensitivity) {
+  // The stretch limits along a mesh's lines of edges (Cloth/StretchLimits.h)
+  // on an irregular OBJ sheet, pinned at one corner, landing on a ball
+  // under water: the same limits in the same per-vertex order on both
+  // devices, so the same solve.
+  SOAK_SKIP_WITHOUT_GPU();
+  const std::string obj = testing::TempDir() + "/gpu_jittered_sheet.obj";
+  test::writeObjFile(test::jitteredSheet(30, 0.6f, 0.3f, 0.5f, 5), obj);
+  const std::string xml =
+      "<Scene><Simulation clothSubsteps='2' clothIterations='30'/><Sphere center='0 0.3 0' radius='0.15' "
+      "friction='0.4'/><Cloth model='chebyshev' mesh='" + obj + "' pin='0'/><WaterBlock min='-0.1 0.53 -0.1' "
+      "max='0.1 0.63 0.1'/></Scene>";
+  expectCudaWithinCpuSensitivity("chebyshev jittered OBJ sheet with mesh stretch limits on a ball with water", xml,
+                                 40);
 }
 
 TEST(GpuAgreement, JetOnClothWithinCpuSensitivity) {
