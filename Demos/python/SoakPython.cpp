@@ -1,7 +1,9 @@
 // The `soak` Python module (pybind11): load a scene, step it, read and
-// write its particle arrays as numpy arrays, write runs as `soak run` does.
-// Doc/python.md is its guide.
-#include <pybind11/numpy.h>
+// write its particle arrays as numpy arrays, share them without copies
+// (DeviceArrayPython.h), write runs as `soak run` does. Doc/python.md is its
+// guide. numpy is reached through its Python API and the buffer protocol
+// only, so that one build works with numpy 1 and 2 whatever pybind11's
+// numpy.h knows of their C structures.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -10,12 +12,14 @@
 #include <sstream>
 
 #include "Base/Error.h"
+#include "DeviceArrayPython.h"
 #include "Output/FrameWriter.h"
 #include "Output/OutputFolder.h"
 #include "Output/RunFolder.h"
 #include "Simulation/Instability.h"
 #include "Simulation/LoadedScene.h"
 #include "Simulation/Runner.h"
+#include "SharedArrays.h"
 #include "SimulationArrays.h"
 #include "SweepPython.h"
 
@@ -61,9 +65,12 @@ class PySimulation {
     return *loaded_->sim;
   }
 
+  ~PySimulation() { generation_->bump(); }
+
   void close() {
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(mutex_);
+    generation_->bump();
     loaded_.reset();
   }
 
@@ -73,6 +80,7 @@ class PySimulation {
     Simulation& s = sim();
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(mutex_);
+    if (n > 0) generation_->bump();
     for (long long k = 0; k < n; ++k) {
       s.step(profile);
       if (k % 16 == 15) checkSignals();
@@ -116,6 +124,7 @@ class PySimulation {
     {
       py::gil_scoped_release release;
       std::lock_guard<std::mutex> lock(mutex_);
+      generation_->bump();
       const RunFolderLock folderLock = claimRunFolder(output, claim);
       FrameWriter writer(output, scene.textAsRun(), FrameWriter::Start::Fresh, s.settings.output);
       Runner runner(s, &writer);
@@ -150,6 +159,8 @@ class PySimulation {
   };
 
   std::mutex& mutex() { return mutex_; }
+  // What device_arrays() handles are checked against.
+  const std::shared_ptr<ArrayGeneration>& generation() const { return generation_; }
 
  private:
   static void checkSignals() {
@@ -159,6 +170,7 @@ class PySimulation {
 
   std::unique_ptr<LoadedScene> loaded_;
   std::mutex mutex_;
+  std::shared_ptr<ArrayGeneration> generation_ = std::make_shared<ArrayGeneration>();
 };
 
 py::dict statsDict(const StatsRow& row) {
@@ -178,17 +190,17 @@ auto locked(PySimulation& s, F&& f) {
   return f(sim);
 }
 
-py::array toNumpy(const HostArray& a) {
-  std::vector<py::ssize_t> shape{py::ssize_t(a.rows())};
-  if (a.components > 1) shape.push_back(a.components);
-  if (a.integer) {
-    py::array_t<int> out(shape);
-    std::copy(a.ints.begin(), a.ints.end(), out.mutable_data());
-    return std::move(out);
-  }
-  py::array_t<float> out(shape);
-  std::copy(a.values.begin(), a.values.end(), out.mutable_data());
-  return std::move(out);
+// A writable numpy array owning a copy of `a` (a bytearray under it).
+py::object toNumpy(const HostArray& a) {
+  const char* bytes = a.integer ? reinterpret_cast<const char*>(a.ints.data()) : reinterpret_cast<const char*>(a.values.data());
+  const std::size_t size = a.integer ? a.ints.size() * sizeof(int) : a.values.size() * sizeof(float);
+  PyObject* raw = PyByteArray_FromStringAndSize(bytes, py::ssize_t(size));
+  if (!raw) throw py::error_already_set();
+  const py::object buffer = py::reinterpret_steal<py::object>(raw);
+  const py::module_ np = py::module_::import("numpy");
+  py::object out = np.attr("frombuffer")(buffer, py::arg("dtype") = a.integer ? "int32" : "float32");
+  if (a.components > 1) out = out.attr("reshape")(py::ssize_t(a.rows()), a.components);
+  return out;
 }
 
 py::dict toDict(const std::vector<HostArray>& arrays) {
@@ -197,20 +209,31 @@ py::dict toDict(const std::vector<HostArray>& arrays) {
   return d;
 }
 
-// A numeric array as C-ordered float32 (converted when it is another
-// numeric type); TypeError for anything else.
-py::array_t<float, py::array::c_style | py::array::forcecast> asFloats(const py::array& values) {
-  const char kind = values.dtype().kind();
-  if (kind != 'f' && kind != 'i' && kind != 'u')
-    throw py::type_error("values must be a numeric array (float32 preferred), not dtype " +
-                         py::str(values.dtype()).cast<std::string>());
-  return py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(values);
-}
+// Values to write: a numeric array (or sequence) as C-ordered float32,
+// converted when it is another numeric type; TypeError for anything else.
+struct Floats {
+  py::object array;  // keeps the buffer alive
+  py::buffer_info info;
+  const float* data() const { return static_cast<const float*>(info.ptr); }
+  std::size_t rows() const { return info.ndim > 0 ? std::size_t(info.shape[0]) : 0; }
+  std::size_t columns() const {
+    if (info.ndim == 1) return 0;
+    if (info.ndim == 2) return std::size_t(info.shape[1]);
+    throw std::invalid_argument("values must be 1- or 2-dimensional, got " + std::to_string(info.ndim) + " dimensions");
+  }
+};
 
-std::size_t columns(const py::array& a) {
-  if (a.ndim() == 1) return 0;
-  if (a.ndim() == 2) return std::size_t(a.shape(1));
-  throw std::invalid_argument("values must be 1- or 2-dimensional, got " + std::to_string(a.ndim()) + " dimensions");
+Floats asFloats(const py::object& values) {
+  const py::module_ np = py::module_::import("numpy");
+  const py::object given = np.attr("asarray")(values);
+  const std::string kind = given.attr("dtype").attr("kind").cast<std::string>();
+  if (kind != "f" && kind != "i" && kind != "u")
+    throw py::type_error("values must be a numeric array (float32 preferred), not dtype " +
+                         py::str(given.attr("dtype")).cast<std::string>());
+  Floats f;
+  f.array = np.attr("ascontiguousarray")(given, py::arg("dtype") = "float32");
+  f.info = py::reinterpret_borrow<py::buffer>(f.array).request();
+  return f;
 }
 
 }  // namespace
@@ -239,6 +262,7 @@ PYBIND11_MODULE(soak, m) {
   });
 
   addSweepFunctions(m);
+  addDeviceArrayClass(m);
 
   m.def("cuda_available", [] { return cudaDeviceAvailable(); }, "Whether the CUDA backend is built and a GPU is present.");
 
@@ -287,13 +311,31 @@ Simulation(path=None, *, xml=None, device="auto", overrides=None, plugins=None)
            "A copy of a per-particle array, in slot order (slots are reordered every step: use 'id' and "
            "'phase', or water() and cloth(), for a stable order).")
       .def("set",
-           [](PySimulation& s, const std::string& field, const py::array& values) {
-             const auto f = asFloats(values);
-             const std::size_t rows = values.ndim() > 0 ? std::size_t(values.shape(0)) : 0, cols = columns(values);
+           [](PySimulation& s, const std::string& field, const py::object& values) {
+             const Floats f = asFloats(values);
+             const std::size_t rows = f.rows(), cols = f.columns();
              locked(s, [&](Simulation& sim) { setField(sim, field, f.data(), rows, cols); return 0; });
            },
            py::arg("field"), py::arg("values"),
            "Writes a per-particle array in slot order: position, velocity or a channel.")
+      .def("device_arrays",
+           [](const py::object& self) {
+             PySimulation& s = self.cast<PySimulation&>();
+             struct Taken {
+               std::vector<SharedArray> arrays;
+               long long step;
+               std::uint64_t generation;
+             };
+             const Taken t = locked(s, [&](Simulation& sim) {
+               return Taken{sharedArrays(sim), sim.stepIndex(), s.generation()->value.load()};
+             });
+             return makeDeviceArrays(t.arrays, s.sim().device(), t.step, t.generation, s.generation(), self);
+           },
+           "The simulation's own arrays, shared without copies: name -> DeviceArray, in slot order "
+           "(position, velocity, inverse_mass, mass, radius, phase, id, then the channels). On the GPU they "
+           "implement __cuda_array_interface__ and DLPack (torch.from_dlpack, cupy.asarray); on the CPU numpy() "
+           "and DLPack give numpy views. Valid until the next step, run or close: a handle used after that raises "
+           "StaleArrayError. Writing position, velocity or a channel through them changes the simulation.")
       .def("water", [](PySimulation& s) { return toDict(locked(s, [](Simulation& sim) { return waterArrays(sim); })); },
            "The water particles' arrays, ordered by id.")
       .def("cloth_names", [](PySimulation& s) { return clothNames(s.sim()); })
@@ -303,9 +345,9 @@ Simulation(path=None, *, xml=None, device="auto", overrides=None, plugins=None)
            },
            py::arg("name"), "One cloth's arrays in vertex order, with its triangles.")
       .def("set_cloth",
-           [](PySimulation& s, const std::string& name, const std::string& field, const py::array& values) {
-             const auto f = asFloats(values);
-             const std::size_t rows = values.ndim() > 0 ? std::size_t(values.shape(0)) : 0, cols = columns(values);
+           [](PySimulation& s, const std::string& name, const std::string& field, const py::object& values) {
+             const Floats f = asFloats(values);
+             const std::size_t rows = f.rows(), cols = f.columns();
              locked(s, [&](Simulation& sim) { setClothField(sim, name, field, f.data(), rows, cols); return 0; });
            },
            py::arg("name"), py::arg("field"), py::arg("values"),
