@@ -3,17 +3,18 @@
 # Needs root (or sudo). The CUDA toolkit is not a Debian package: if
 # /usr/local/cuda (or nvcc on PATH) is there, the CUDA backend is built too.
 # clang and its runtime are for the sanitizer build and the fuzzers (Doc/reliability.md);
-# pybind11, numpy and pytest for the Python module (Doc/python.md), OpenVDB (whose CMake
-# module also asks for Boost.Iostreams) for the .vdb export (Doc/output.md); Blender for the
-# tests of the Blender add-on (Demos/blender, Doc/output.md "Blender"); Slurm and munge for
-# the test that runs `soak sweep` on a one-node Slurm (Doc/sweeps.md).
+# pybind11, numpy and pytest for the Python module, venv and pip for its `pip install .` test
+# (Doc/python.md), OpenVDB (whose CMake module also asks for Boost.Iostreams) for the .vdb
+# export (Doc/output.md); Blender for the tests of the Blender add-on (Demos/blender,
+# Doc/output.md "Blender"); Slurm and munge for the test that runs `soak sweep` on a
+# one-node Slurm (Doc/sweeps.md).
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libpugixml-dev libgtest-dev libtinyobjloader-dev
   paraview-dev python3-paraview
   xvfb python3-matplotlib
-  pybind11-dev python3-pybind11 python3-numpy python3-pytest libopenvdb-dev libboost-iostreams-dev
+  pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-venv python3-pip libopenvdb-dev libboost-iostreams-dev
   clang libclang-rt-14-dev libomp-dev
   blender
   slurmctld slurmd slurm-client munge
