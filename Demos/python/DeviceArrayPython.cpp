@@ -114,8 +114,11 @@ void capsuleDestructor(PyObject* capsule) {
   }
 }
 
-py::capsule dlpackCapsule(const py::object& self, const py::object& stream, const py::object& dlDevice,
-                          const py::object& copy) {
+// __dlpack__(*, stream, max_version, dl_device, copy). Whatever max_version
+// asks, the capsule is an unversioned "dltensor" (DLPack 0.x), which the
+// protocol lets a producer return and every consumer reads.
+py::capsule dlpackCapsule(const py::object& self, const py::object& stream, const py::object& /*maxVersion*/,
+                          const py::object& dlDevice, const py::object& copy) {
   const DeviceArray& d = self.cast<const DeviceArray&>();
   d.check();
   if (!copy.is_none() && copy.cast<bool>())
