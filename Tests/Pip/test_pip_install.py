@@ -175,7 +175,7 @@ def test_pip_wheel_installs_into_a_second_venv(cli_frames):
 def test_editable_install_uses_the_build_folder(cli_frames):
     scene, frames = cli_frames
     venv, python = make_venv("venv-editable")
-    pip(python, "install", "-e", *config(), SOURCE)
+    pip(python, "install", *config(), "-e", SOURCE)
     arrays, mapped = step_in(python, scene, "editable")
     assert os.path.dirname(str(arrays["module"])) == os.path.join(BUILD, "python")
     assert all(m.startswith(os.path.join(BUILD, "lib")) for m in mapped), mapped
