@@ -154,10 +154,9 @@ def test_pip_install_into_a_venv_matches_soak_run(cli_frames):
 
 def test_pip_wheel_installs_into_a_second_venv(cli_frames):
     scene, frames = cli_frames
-    builder, builder_python = make_venv("venv-builder")
     dist = os.path.join(WORK, "dist")
     shutil.rmtree(dist, ignore_errors=True)
-    pip(builder_python, "wheel", "--no-deps", "-w", dist, *config(), SOURCE)
+    pip(PYTHON, "wheel", "--no-deps", "-w", dist, *config(), SOURCE)  # the base Python's pip: no venv needed
     wheels = os.listdir(dist)
     assert len(wheels) == 1
     tag = run([PYTHON, "-c", "import sys, sysconfig; print('cp%d%d' % sys.version_info[:2], "
