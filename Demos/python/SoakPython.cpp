@@ -192,7 +192,8 @@ auto locked(PySimulation& s, F&& f) {
 
 // A writable numpy array owning a copy of `a` (a bytearray under it).
 py::object toNumpy(const HostArray& a) {
-  const char* bytes = a.integer ? reinterpret_cast<const char*>(a.ints.data()) : reinterpret_cast<const char*>(a.values.data());
+  const char* bytes =
+      a.integer ? reinterpret_cast<const char*>(a.ints.data()) : reinterpret_cast<const char*>(a.values.data());
   const std::size_t size = a.integer ? a.ints.size() * sizeof(int) : a.values.size() * sizeof(float);
   PyObject* raw = PyByteArray_FromStringAndSize(bytes, py::ssize_t(size));
   if (!raw) throw py::error_already_set();
