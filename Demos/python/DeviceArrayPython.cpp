@@ -16,8 +16,11 @@ struct StaleArrayError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The GPU's compute stream is CUDA's legacy default stream (CudaBackend.cu):
-// __cuda_array_interface__ calls it 1.
+// Soak queues a step's GPU work on the stepping thread's per-thread default
+// stream (CudaBackend.cu), which __cuda_array_interface__ and DLPack call 2.
+// It is a blocking stream: work on the legacy default stream (1), PyTorch's
+// and CuPy's default, waits for it and it for that work.
+constexpr int kPerThreadDefaultStream = 2;
 constexpr int kLegacyDefaultStream = 1;
 // Soak runs on the process's first GPU.
 constexpr int kCudaDeviceId = 0;
@@ -81,7 +84,7 @@ py::dict arrayInterface(const DeviceArray& d, bool cuda) {
   i["data"] = py::make_tuple(d.pointer(), !d.array().writable);
   i["strides"] = d.interfaceStrides();
   i["version"] = 3;
-  if (cuda) i["stream"] = kLegacyDefaultStream;
+  if (cuda) i["stream"] = kPerThreadDefaultStream;
   return i;
 }
 
@@ -128,8 +131,10 @@ py::capsule dlpackCapsule(const py::object& self, const py::object& stream, cons
                            " and cannot be exported to another device");
   if (d.device() == Device::Cuda && !stream.is_none()) {
     const long long s = stream.cast<long long>();
-    // None, 1 (the legacy default stream, Soak's own) and -1 (no synchronisation)
-    // need nothing; any other stream must see the step's work done: wait for it.
+    // None and 1 (the legacy default stream, which waits for Soak's blocking
+    // stream by itself) and -1 (no synchronisation) need nothing; any other
+    // stream, 2 of another thread included, must see the step's work done:
+    // the host waits for it.
     if (s == 0) throw py::value_error("__dlpack__: stream 0 is ambiguous (use 1 for the legacy default stream)");
     if (s != kLegacyDefaultStream && s != -1) {
       py::gil_scoped_release release;

@@ -34,7 +34,7 @@ def test_torch_and_cupy_read_the_simulations_memory(sim):
     assert h.__dlpack_device__() == (2, 0)
     cai = h.__cuda_array_interface__
     assert cai["version"] == 3 and cai["typestr"] == "<f4" and cai["shape"] == (sim.particle_count, 3)
-    assert cai["strides"] == (16, 4) and cai["data"] == (h.ptr, False) and cai["stream"] == 1
+    assert cai["strides"] == (16, 4) and cai["data"] == (h.ptr, False) and cai["stream"] == 2
     t = torch.from_dlpack(h)
     assert t.is_cuda and t.data_ptr() == h.ptr and t.shape == (sim.particle_count, 3)
     c = cupy.asarray(h)  # through __cuda_array_interface__
@@ -54,7 +54,7 @@ def test_a_write_through_torch_moves_the_cloth(sim):
     slot = int(torch.nonzero((phase == 1) & (ident == 220))[0, 0])
     position = torch.from_dlpack(arrays["position"])
     before = sim.cloth("sheet")["position"][220].copy()
-    position[slot, 1] += 0.25  # on the legacy default stream, as Soak's own work
+    position[slot, 1] += 0.25  # on the legacy default stream, which Soak's stream waits for
     written = sim.cloth("sheet")["position"]
     assert written[220][1] == pytest.approx(before[1] + 0.25, abs=1e-6)  # in the simulation's memory
     # The steps go on from the written state: as from the same write made with set_cloth(), and not as from
@@ -96,7 +96,7 @@ def test_saturation_each_step_on_the_gpu_equals_the_copies(sim):
 def test_another_stream_sees_the_step_done(sim):
     stream = torch.cuda.Stream()
     with torch.cuda.stream(stream):
-        sim.step(4)  # queued on Soak's stream; the handle below waits for it on `stream`
+        sim.step(4)  # queued on Soak's stream; __dlpack__(stream=...) below waits for it
         position = torch.from_dlpack(sim.device_arrays()["position"])
         copy = position.clone()
     stream.synchronize()
