@@ -104,7 +104,7 @@ struct StepGraphs {
   bool active = false, capturing = false;
   int key = 0, segment = 0, holds = 0;
   std::map<std::tuple<int, int, std::size_t>, cudaGraphExec_t> execs;
-  GraphCounters counters;
+  StepGraphCounters counters;
 };
 StepGraphs& stepGraphs() {
   thread_local StepGraphs g;  // a step is captured on the thread that runs it
@@ -201,7 +201,7 @@ void graphHold(bool hold) {
   }
 }
 
-GraphCounters graphCounters() { return stepGraphs().counters; }
+StepGraphCounters graphCounters() { return stepGraphs().counters; }
 
 void synchronize() {
   graphPause();

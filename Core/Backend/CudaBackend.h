@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+#include "Backend/Device.h"
+
 namespace soak::cuda {
 
 bool built();
@@ -55,16 +57,13 @@ void copyAsync(void* dst, const void* src, std::size_t bytes, int kind, int stre
 // launch, starts the next). Steps of the same `key` (plain or maintenance)
 // reuse their executable graphs, updated with each capture's parameters.
 // graphHold(true) pauses and keeps capture off until graphHold(false).
-struct GraphCounters {
-  unsigned long long launches = 0, updates = 0, instantiations = 0, nodes = 0;
-};
 void graphBeginStep(int key);
 void graphResume();
 void graphPause();
 void graphEndStep();
 void graphAbandonStep() noexcept;
 void graphHold(bool hold);
-GraphCounters graphCounters();
+StepGraphCounters graphCounters();
 
 // Timing marks on the device's queue (CUDA events), for DeviceMarks.
 void* createMark();

@@ -22,7 +22,7 @@ void graphPause() {}
 void graphEndStep() {}
 void graphAbandonStep() noexcept {}
 void graphHold(bool) {}
-GraphCounters graphCounters() { return {}; }
+StepGraphCounters graphCounters() { return {}; }
 void synchronize() {}
 void* allocate(std::size_t) { refuse(); }
 void release(void*) noexcept {}

@@ -68,10 +68,7 @@ void countLaunch() {
 void cudaGraphBeginStep(int key) { cuda::graphBeginStep(key); }
 void cudaGraphEndStep() { cuda::graphEndStep(); }
 void cudaGraphAbandonStep() noexcept { cuda::graphAbandonStep(); }
-StepGraphCounters stepGraphCounters() {
-  const cuda::GraphCounters c = cuda::graphCounters();
-  return {c.launches, c.updates, c.instantiations, c.nodes};
-}
+StepGraphCounters stepGraphCounters() { return cuda::graphCounters(); }
 
 void synchronize(Device d) {
   countHostWait();

@@ -1,6 +1,5 @@
 #include "Sweep/LocalExecutor.h"
 
-#include <sched.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,6 +13,7 @@
 #include <thread>
 
 #include "Backend/Device.h"
+#include "Backend/ProcessLimits.h"
 #include "Base/Error.h"
 #include "Sweep/StopSignals.h"
 #include "Sweep/SweepLaunch.h"
@@ -59,13 +59,6 @@ std::vector<std::string> visibleGpus() {
   return gpus;
 }
 
-int usableCores() {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof(set), &set) == 0) return std::max(1, CPU_COUNT(&set));
-  return std::max(1, int(std::thread::hardware_concurrency()));
-}
-
 int sweepExitCode(const SweepRunSummary& s) {
   if (s.stopped) return 130;
   return s.done == s.points ? 0 : 6;
@@ -79,19 +72,19 @@ SweepRunSummary runLocalSweep(const std::string& dir, const LocalRunOptions& opt
   };
   std::vector<std::string> gpus = options.gpus;
   if (gpus.empty() && options.detectGpus && state.description.device != "cpu") gpus = visibleGpus();
-  const int cores = usableCores();
+  const int cores = usableCpuCount();
   const int jobs = options.jobs > 0 ? options.jobs : !gpus.empty() ? int(gpus.size()) : cores;
   const int threads = options.threads > 0 ? options.threads : std::max(1, cores / jobs);
   const std::string program = soakProgramPath(options.soakProgram);
 
-  std::deque<std::size_t> todo;
+  std::deque<std::size_t> pending;
   for (std::size_t i = 0; i < state.points.size(); ++i) {
     const PointRecord& r = state.records[i];
-    if (!pointSettled(r) && r.status != "running") todo.push_back(i);
+    if (!pointSettled(r) && r.status != "running") pending.push_back(i);
   }
   SweepRunSummary summary;
   summary.points = int(state.points.size());
-  say("soak sweep: " + std::to_string(todo.size()) + " of " + std::to_string(state.points.size()) +
+  say("soak sweep: " + std::to_string(pending.size()) + " of " + std::to_string(state.points.size()) +
       " points to run, " + std::to_string(jobs) + " at a time" +
       (gpus.empty() ? ", " + std::to_string(threads) + " CPU thread(s) each" : ", one GPU each") + " (" +
       statusCounts(state) + ")");
@@ -102,13 +95,13 @@ SweepRunSummary runLocalSweep(const std::string& dir, const LocalRunOptions& opt
   std::vector<std::string> freeGpus = gpus;
   Clock::time_point lastManifest = Clock::now();
   bool manifestStale = false;
-  const std::size_t total = todo.size();
+  const std::size_t total = pending.size();
   std::size_t finished = 0;
 
-  while (!running.empty() || (!todo.empty() && stop.count() == 0)) {
-    while (stop.count() == 0 && !todo.empty() && int(running.size()) < jobs) {
-      const std::size_t index = todo.front();
-      todo.pop_front();
+  while (!running.empty() || (!pending.empty() && stop.count() == 0)) {
+    while (stop.count() == 0 && !pending.empty() && int(running.size()) < jobs) {
+      const std::size_t index = pending.front();
+      pending.pop_front();
       const SweepPoint& p = state.points[index];
       try {
         const PointLaunch launch = pointLaunch(layout, state.description, p, program, threads);

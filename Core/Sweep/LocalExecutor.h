@@ -42,7 +42,4 @@ int sweepExitCode(const SweepRunSummary& s);
 // build with the CUDA backend, else none.
 std::vector<std::string> visibleGpus();
 
-// CPU cores this process may run on (its affinity mask).
-int usableCores();
-
 }  // namespace soak
