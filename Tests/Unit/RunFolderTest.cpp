@@ -144,8 +144,9 @@ TEST(RunFolder, AFolderThatIsNotARunIsRefusedBeforeAnythingIsWritten) {
 
 TEST(RunFolder, ARunHoldsItsFolderUntilItEndsAndAKillLeavesNoStaleLock) {
   const std::string dir = freshTempPath("runfolder_lock");
-  // 40 frames with a checkpoint each: long enough to be met while running.
-  const pid_t first = startSoak({"run", clothScene(), "-o", dir, "--frames", "40", "--device", "cpu", "--quiet",
+  // A run far longer than the test, with a checkpoint every frame: met
+  // while running on any machine, and killed below.
+  const pid_t first = startSoak({"run", clothScene(), "-o", dir, "--frames", "100000", "--device", "cpu", "--quiet",
                                  "--checkpoint-every", "1"});
   ASSERT_TRUE(waitForFile(first, dir + "/checkpoint.soak")) << "the first run ended before it was met";
 
@@ -162,9 +163,12 @@ TEST(RunFolder, ARunHoldsItsFolderUntilItEndsAndAKillLeavesNoStaleLock) {
   kill(first, SIGKILL);
   EXPECT_EQ(exitCodeOf(first), -1);
   EXPECT_EQ(soak::runFolderHolder(dir), "") << "a killed run left its lock";
-  const SoakResult resumed = runSoak("run --resume " + dir + " --device cpu --quiet");
+  // The killed run's folder resumes: to two frames past what it listed.
+  const int listed = framesListed(dir);
+  const SoakResult resumed =
+      runSoak("run --resume " + dir + " --frames " + std::to_string(listed + 1) + " --device cpu --quiet");
   EXPECT_EQ(resumed.code, 0) << resumed.output;
-  EXPECT_EQ(framesListed(dir), 41);
+  EXPECT_EQ(framesListed(dir), listed + 2);
 }
 
 TEST(RunFolder, TwoRunsStartedTogetherNeverShareAFolder) {
