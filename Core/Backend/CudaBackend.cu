@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <stdexcept>
 #include <tuple>
+#include <vector>
 
 #include "Backend/CudaBackend.h"
 #include "Base/Error.h"
@@ -103,6 +105,12 @@ namespace {
 struct StepGraphs {
   bool active = false, capturing = false;
   int key = 0, segment = 0, holds = 0;
+  // Inside a device loop: the step's graph (its capture ended where the
+  // loop node went in) and the loop's node and condition.
+  bool inLoop = false;
+  cudaGraph_t outer = nullptr;
+  cudaGraphNode_t loopNode = nullptr;
+  cudaGraphConditionalHandle loopCondition = 0;
   std::map<std::tuple<int, int, std::size_t>, cudaGraphExec_t> execs;
   StepGraphCounters counters;
 };
@@ -130,6 +138,7 @@ void graphResume() {
 void graphPause() {
   StepGraphs& g = stepGraphs();
   if (!g.capturing) return;
+  if (g.inLoop) throw std::logic_error("a device loop's body waited for the host, allocated or copied to the host");
   g.capturing = false;
   cudaGraph_t graph = nullptr;
   check(cudaStreamEndCapture(cudaStreamPerThread, &graph), "capturing a step graph");
@@ -183,9 +192,13 @@ void graphAbandonStep() noexcept {
   if (g.capturing) {
     cudaGraph_t graph = nullptr;
     cudaStreamEndCapture(cudaStreamPerThread, &graph);
+    // A loop's body belongs to its node, which belongs to the step's graph.
+    if (g.inLoop && g.outer) graph = g.outer;
     if (graph) cudaGraphDestroy(graph);
     cudaGetLastError();
   }
+  g.inLoop = false;
+  g.outer = nullptr;
   g.capturing = false;
   g.active = false;
   g.holds = 0;
@@ -202,6 +215,66 @@ void graphHold(bool hold) {
 }
 
 StepGraphCounters graphCounters() { return stepGraphs().counters; }
+
+// Device loops in a step graph: the capture so far ends, a conditional
+// WHILE node goes in after its last work, the body is captured into the
+// node's graph, and the capture of the step's graph goes on after the node.
+// The condition starts at 1 every launch (cudaGraphCondAssignDefault): a
+// loop runs its body at least once.
+namespace {
+__global__ void advanceLoop(int* index, const int* count, cudaGraphConditionalHandle condition, int inLoopNode) {
+  const int next = *index + 1;
+  *index = next;
+  if (inLoopNode) cudaGraphSetConditional(condition, next < *count ? 1u : 0u);
+}
+}  // namespace
+
+bool graphLoopBegin() {
+  StepGraphs& g = stepGraphs();
+  if (g.inLoop) throw std::logic_error("device loops do not nest");
+  graphResume();
+  if (!g.capturing) return false;
+  cudaStreamCaptureStatus status = cudaStreamCaptureStatusNone;
+  cudaGraph_t graph = nullptr;
+  const cudaGraphNode_t* leaves = nullptr;
+  std::size_t leafCount = 0;
+  check(cudaStreamGetCaptureInfo(cudaStreamPerThread, &status, nullptr, &graph, &leaves, nullptr, &leafCount),
+        "reading a step graph's capture");
+  const std::vector<cudaGraphNode_t> after(leaves, leaves + leafCount);
+  check(cudaStreamEndCapture(cudaStreamPerThread, &g.outer), "capturing a step graph before a device loop");
+  check(cudaGraphConditionalHandleCreate(&g.loopCondition, g.outer, 1, cudaGraphCondAssignDefault),
+        "creating a device loop's condition");
+  cudaGraphNodeParams params{};
+  params.type = cudaGraphNodeTypeConditional;
+  params.conditional.handle = g.loopCondition;
+  params.conditional.type = cudaGraphCondTypeWhile;
+  params.conditional.size = 1;
+  check(cudaGraphAddNode(&g.loopNode, g.outer, after.data(), nullptr, after.size(), &params),
+        "adding a device loop to a step graph");
+  check(cudaStreamBeginCaptureToGraph(cudaStreamPerThread, params.conditional.phGraph_out[0], nullptr, nullptr, 0,
+                                      cudaStreamCaptureModeThreadLocal),
+        "capturing a device loop's body");
+  g.inLoop = true;
+  return true;
+}
+
+void graphLoopAdvance(int* index, const int* count) {
+  StepGraphs& g = stepGraphs();
+  advanceLoop<<<1, 1>>>(index, count, g.inLoop ? g.loopCondition : 0, g.inLoop ? 1 : 0);
+  check(cudaGetLastError(), "advancing a device loop");
+}
+
+void graphLoopEnd() {
+  StepGraphs& g = stepGraphs();
+  if (!g.inLoop) return;
+  cudaGraph_t body = nullptr;
+  check(cudaStreamEndCapture(cudaStreamPerThread, &body), "capturing a device loop's body");
+  g.inLoop = false;
+  check(cudaStreamBeginCaptureToGraph(cudaStreamPerThread, g.outer, &g.loopNode, nullptr, 1,
+                                      cudaStreamCaptureModeThreadLocal),
+        "resuming a step graph after a device loop");
+  g.outer = nullptr;
+}
 
 void synchronize() {
   graphPause();

@@ -64,6 +64,15 @@ void graphEndStep();
 void graphAbandonStep() noexcept;
 void graphHold(bool hold);
 StepGraphCounters graphCounters();
+// A loop whose rounds the device counts (DeviceLoop.h). graphLoopBegin: where
+// the step is being captured, adds a conditional WHILE node to the step's
+// graph and captures what follows, up to graphLoopEnd, as its body; false
+// (nothing changed) where no capture is on. graphLoopAdvance queues the
+// kernel that ends a round: ++*index, and inside a loop node the condition
+// *index < *count for the next.
+bool graphLoopBegin();
+void graphLoopAdvance(int* index, const int* count);
+void graphLoopEnd();
 
 // Timing marks on the device's queue (CUDA events), for DeviceMarks.
 void* createMark();

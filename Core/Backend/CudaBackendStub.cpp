@@ -23,6 +23,9 @@ void graphEndStep() {}
 void graphAbandonStep() noexcept {}
 void graphHold(bool) {}
 StepGraphCounters graphCounters() { return {}; }
+bool graphLoopBegin() { return false; }
+void graphLoopAdvance(int*, const int*) { refuse(); }
+void graphLoopEnd() {}
 void synchronize() {}
 void* allocate(std::size_t) { refuse(); }
 void release(void*) noexcept {}

@@ -70,6 +70,19 @@ void cudaGraphEndStep() { cuda::graphEndStep(); }
 void cudaGraphAbandonStep() noexcept { cuda::graphAbandonStep(); }
 StepGraphCounters stepGraphCounters() { return cuda::graphCounters(); }
 
+bool beginDeviceLoop(Device d) { return d == Device::Cuda && cuda::graphLoopBegin(); }
+void advanceDeviceLoop(Device d, int* index, const int* count) {
+  countLaunch();
+  if (d == Device::Cuda) {
+    cuda::graphLoopAdvance(index, count);
+  } else {
+    ++*index;
+  }
+}
+void endDeviceLoop(Device d) {
+  if (d == Device::Cuda) cuda::graphLoopEnd();
+}
+
 void synchronize(Device d) {
   countHostWait();
   if (d == Device::Cuda) cuda::synchronize();

@@ -75,6 +75,12 @@ struct StepGraphCounters {
 };
 StepGraphCounters stepGraphCounters();
 
+// The pieces of repeatOnDevice (DeviceLoop.h): begin is true where the
+// rounds stay on the device (a step graph being captured on the GPU).
+bool beginDeviceLoop(Device d);
+void advanceDeviceLoop(Device d, int* index, const int* count);
+void endDeviceLoop(Device d);
+
 // Throws DeviceError naming `what` if the last kernel launch failed (CUDA only).
 void checkLastLaunch(Device d, const char* what);
 

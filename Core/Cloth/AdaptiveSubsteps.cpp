@@ -1,8 +1,6 @@
 #include "Cloth/AdaptiveSubsteps.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
+#include "Cloth/SubstepClock.h"
 
 #include "Backend/ForEach.h"
 #include "Backend/Primitives.h"
@@ -35,30 +33,23 @@ void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const C
   }, "cloth.substeps.strain_counts");
 }
 
-StrainSubsteps substepsForStrain(StrainSubsteps current, int above, int aboveQuarter, int edges, int fewest,
-                                 int most) {
-  const int top = std::max(fewest, most);
-  StrainSubsteps next = current;
-  next.substeps = std::clamp(current.substeps, fewest, top);
-  const long long onePercent = (std::int64_t(edges) + 99) / 100;  // edges past the 99th percentile
-  if (above > onePercent) {
-    next.substeps = std::min(top, next.substeps + std::max(1, next.substeps / 2));
-    next.calmSteps = 0;
-  } else if (aboveQuarter < onePercent) {
-    if (++next.calmSteps >= kStrainCalmSteps) {
-      next.substeps = std::max(fewest, next.substeps - 1);
-      next.calmSteps = 0;
+void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, const int* strainCounts,
+                         SubstepChoice choice) {
+  forEach(d, 1, SOAK_LAMBDA(int) {
+    SubstepClock& k = *clock;
+    int n = choice.fewest;
+    if (choice.travel > 0.f) {
+      n = substepsForTravel(*maxTravel, choice.travel, choice.fewest, choice.most);
+      if (strainCounts) {
+        k.strain = substepsForStrain(k.strain, strainCounts[0], strainCounts[1], choice.strainEdges, choice.fewest,
+                                     choice.strainMost);
+        if (k.strain.substeps > n) n = k.strain.substeps;
+      }
     }
-  } else {
-    next.calmSteps = 0;
-  }
-  return next;
-}
-
-int substepsForTravel(float perStep, float travel, int fewest, int most) {
-  if (!std::isfinite(perStep)) return std::max(fewest, most);
-  const double wanted = std::ceil(double(perStep) / double(travel));
-  return int(std::clamp(wanted, double(fewest), double(std::max(fewest, most))));
+    k.substep = 0;
+    k.substeps = n;
+    k.taken += n;
+  }, "cloth.substeps.choose");
 }
 
 }  // namespace soak

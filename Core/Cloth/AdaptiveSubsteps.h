@@ -15,9 +15,12 @@
 // gravity and the plugins' forces add over the step).
 // Each sub-step runs clothIterations: sharing a slow step's iterations out
 // over a fast step's sub-steps left the sheets stretched (Doc/design.md).
-// The predict stage queues the measurement and its copy to the host, and
-// the cloth stage reads it, so the host waits for the device only as far
-// as predict while the device works through the stages in between.
+// The predict stage queues the measurement and the cloth stage the choice,
+// both on the device, where the sub-steps read it (SubstepClock.h): inside
+// a step graph the host never learns the count (Backend/DeviceLoop.h).
+#include <cmath>
+
+#include "Base/HostDevice.h"
 #include "Cloth/ClothSystem.h"
 
 namespace soak {
@@ -30,8 +33,14 @@ void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* 
 
 // Sub-steps for a travel of `perStep` thicknesses a step: ceil(perStep /
 // travel) within [fewest, max(fewest, most)], the upper bound when perStep
-// is not finite.
-int substepsForTravel(float perStep, float travel, int fewest, int most);
+// is not finite. On the device as well: the step's count is chosen there
+// (ClothStep.h).
+SOAK_INLINE int substepsForTravel(float perStep, float travel, int fewest, int most) {
+  const int top = most > fewest ? most : fewest;
+  if (!(fabsf(perStep) <= 3.402823466e38f)) return top;  // inf or NaN
+  const double wanted = ceil(double(perStep) / double(travel));
+  return wanted < double(fewest) ? fewest : wanted > double(top) ? top : int(wanted);
+}
 
 // Sub-steps from the strain the solve leaves (Simulation.clothStrainTarget).
 //
@@ -67,7 +76,45 @@ struct StrainSubsteps {
 void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const ClothEdge* edges, const float* rest,
                         int n, float target, int* flags, int* scan, int* counts);
 
+struct SubstepClock;
+// How a step's count is chosen: `fewest` (Simulation.clothSubsteps) unless
+// travel > 0 (Simulation.clothSubstepTravel): then from the largest travel
+// up to `most`, and from the strain counts (where measured) up to
+// `strainMost`, the larger of the two.
+struct SubstepChoice {
+  int fewest = 1;
+  float travel = 0.f;
+  int most = 1;
+  int strainMost = 1;
+  int strainEdges = 0;
+};
+// Writes the step's count to the clock (its substep 0, its total taken up),
+// on the device, from *maxTravel and, where not null, strainCounts[0..1]
+// (measureClothTravel, measureClothStrain); the strain's state is the
+// clock's.
+void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, const int* strainCounts,
+                         SubstepChoice choice);
+
 // What the strain asks for next, from what it asked before and the counts.
-StrainSubsteps substepsForStrain(StrainSubsteps current, int above, int aboveQuarter, int edges, int fewest, int most);
+SOAK_INLINE StrainSubsteps substepsForStrain(StrainSubsteps current, int above, int aboveQuarter, int edges, int fewest,
+                                             int most) {
+  const int top = fewest > most ? fewest : most;
+  StrainSubsteps next = current;
+  next.substeps = current.substeps < fewest ? fewest : current.substeps > top ? top : current.substeps;
+  const long long onePercent = (static_cast<long long>(edges) + 99) / 100;  // edges past the 99th percentile
+  if (above > onePercent) {
+    const int raise = next.substeps / 2 > 1 ? next.substeps / 2 : 1;
+    next.substeps = next.substeps + raise < top ? next.substeps + raise : top;
+    next.calmSteps = 0;
+  } else if (aboveQuarter < onePercent) {
+    if (++next.calmSteps >= kStrainCalmSteps) {
+      next.substeps = next.substeps - 1 > fewest ? next.substeps - 1 : fewest;
+      next.calmSteps = 0;
+    }
+  } else {
+    next.calmSteps = 0;
+  }
+  return next;
+}
 
 }  // namespace soak

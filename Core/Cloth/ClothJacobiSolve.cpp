@@ -84,7 +84,7 @@ SOAK_INLINE void addSprings(JacobiSums& sums, const ClothView& c, const Float4* 
 constexpr int kJacobiLanes = 4;
 }  // namespace
 
-void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho,
+void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, SubstepTime t, float rho,
                       const Collider* colliders, int colliderCount, float collisionRadiusScale,
                       const Float4* substepStart) {
   const int n = c.jacobiVertexCount;
@@ -97,7 +97,6 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
   Float4* even = c.vertexScratch;  // iterate buffers 0 and 1
   Float4* odd = c.jacobiPrevious;
   Float4* target = c.jacobiTarget;
-  const float invH2 = 1.f / (h * h);
   float omega = 1.f;
   int iteration = 0;
   // Stages go to launches of at most kMaxPhases phases (one for up to
@@ -147,7 +146,8 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
                 w[a] = xa.w;
               }
               float kPrime = loadReadOnly(c.jacobiBendStiffness + ref.bend);
-              if (c.bendExponent != 1.f) kPrime = 1.f - powf(1.f - kPrime, c.bendExponent);
+              const float exponent = t.bendExponent();
+              if (exponent != 1.f) kPrime = 1.f - powf(1.f - kPrime, exponent);
               addBendCorrection(sum, count, q, w, ref.role, loadReadOnly(c.jacobiBendRest + ref.bend),
                                 kPrime * bendScaleOf(c.bendScale, bend.v));
             }
@@ -175,7 +175,8 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
           sums.weight = laneSum(l, sums.weight);
           if (!l.leader()) return;
           addColliderTerms(sums, xi, yr.w, colliders, colliderCount);
-          Vec3 xhat = jacobiMinimum(sums, y, invH2 / xv.w);
+          const float h = t.h();
+          Vec3 xhat = jacobiMinimum(sums, y, 1.f / (h * h) / xv.w);
           // Tethers as hard limits on the Jacobi step's result: their pins
           // do not move during the solve, so the projection needs no other
           // vertex's new position and costs no phase; it carries the pins'
@@ -198,7 +199,7 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, flo
           // A sub-step's projection out of the colliders, with friction
           // over the sub-step's motion (here rather than a launch of its own).
           if (substepStart)
-            q = projectOutOfColliders(colliders, colliderCount, substepStart[slot].xyz(), q, target[v].w, h,
+            q = projectOutOfColliders(colliders, colliderCount, substepStart[slot].xyz(), q, target[v].w, t.h(),
                                       c.frictionScale ? c.frictionScale[v] : 1.f);
           p.predicted[slot] = Float4(q, xv.w);
           return;

@@ -1,5 +1,6 @@
 #include "Cloth/ClothSolve.h"
 
+#include "Backend/DeviceLoop.h"
 #include "Backend/ForEach.h"
 #include "Backend/ForEachPhased.h"
 #include "Base/ReadOnly.h"
@@ -9,7 +10,7 @@
 namespace soak {
 
 void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vector<int>& stretchColours,
-                           const std::vector<int>& bendColours, int iterations, float dt) {
+                           const std::vector<int>& bendColours, int iterations, SubstepTime t) {
   // One index space: tethers [0, V), then the stretch constraints [V, V + E),
   // then the bends; one phase for the tethers and one per colour, repeated
   // for every iteration (ForEachPhased.h: one launch on the GPU).
@@ -57,7 +58,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
       const ClothEdge edge = loadReadOnly(c.edges + e);
       const Float4 xa = x[edge.a], xb = x[edge.b];
       Vec3 da, db;
-      projectStretch(xa.xyz(), xa.w, xb.xyz(), xb.w, loadReadOnly(c.edgeRest + e), loadReadOnly(c.edgeStiffness + e), dt,
+      projectStretch(xa.xyz(), xa.w, xb.xyz(), xb.w, loadReadOnly(c.edgeRest + e), loadReadOnly(c.edgeStiffness + e), t.h(),
                      c.edgeLambda[e], da, db);
       x[edge.a] = Float4(xa.xyz() + da, xa.w);
       x[edge.b] = Float4(xb.xyz() + db, xb.w);
@@ -73,7 +74,7 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
         w[a] = xa.w;
       }
       const ConstraintStiffness k = scaledStiffness(loadReadOnly(c.bendStiffness + b), bendScaleOf(c.bendScale, bend.v));
-      projectBend(q, w, loadReadOnly(c.bendRest + b), k, dt, c.bendLambda[b], dx);
+      projectBend(q, w, loadReadOnly(c.bendRest + b), k, t.h(), c.bendLambda[b], dx);
       for (int a = 0; a < 4; ++a) x[bend.v[a]] = Float4(q[a] + dx[a], w[a]);
     }
   }, "cloth.constraints");
@@ -92,18 +93,90 @@ SOAK_INLINE void endSubstep(const ParticleView& p, const ClothSubstepScratch& s,
   s.velocity[i] = (q.xyz() - s.start[i].xyz()) * (1.f / h);
   s.start[i] = q;
 }
+
+// What one sub-step works on.
+struct Substep {
+  Device d;
+  ParticleView p, substepView;
+  ClothSystem* cloth;
+  const Collider* colliders;
+  int colliderCount;
+  float collisionRadiusScale;
+  Vec3 gravity;
+  SubstepTime t;
+  bool oneSubstep;
+  int iterations;
+  float rho;
+  ClothSubstepScratch s;
+  const ClothContactPasses* contacts;
+};
+
+// One sub-step. Its place and length are the clock's (SubstepClock.h), so
+// that the sub-steps can run as a device loop.
+void runSubstep(const Substep& a) {
+  const Device d = a.d;
+  const ParticleView p = a.p;
+  const ClothView c = a.cloth->view();
+  const ClothSubstepScratch s = a.s;
+  const SubstepTime t = a.t;
+  const Collider* colliders = a.colliders;
+  const int colliderCount = a.colliderCount;
+  const float collisionRadiusScale = a.collisionRadiusScale;
+  const Vec3 gravity = a.gravity;
+  const bool oneSubstep = a.oneSubstep;
+  forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+    const int i = c.vertexSlot[v];
+    const float h = t.h();
+    if (t.index() > 0) endSubstep(p, s, i, h);  // the sub-step before this one ends here
+    const Float4 x = p.position[i];
+    if (x.w == 0.f) {
+      const int k = c.attachCollider[v];
+      // Attached vertices follow their collider's path, reaching its end
+      // point with the last sub-step; fixed pins stay.
+      const Vec3 target = k >= 0 ? c.restPosition[v] + colliders[k].displacement : x.xyz();
+      p.predicted[i] = Float4(t.last() ? target : x.xyz() + (target - x.xyz()) * t.along(), 0.f);
+      return;
+    }
+    if (oneSubstep) return;
+    const Vec3 vel = s.velocity[i] + gravity * h;
+    s.velocity[i] = vel;
+    p.predicted[i] = Float4(s.start[i].xyz() + vel * h, x.w);
+  }, "cloth.substep.predict");
+  if (!oneSubstep) a.contacts->separate(a.substepView);
+  a.cloth->resetMultipliers();
+  solveClothConstraints(d, p, c, a.cloth->edgeColourStart(), a.cloth->bendColourStart(), a.iterations, t);
+  solveClothJacobi(d, p, c, a.iterations, t, a.rho, colliders, colliderCount, collisionRadiusScale,
+                   oneSubstep ? nullptr : s.start);
+  if (oneSubstep) {
+    // The paper's single pass projects every particle out of the
+    // colliders here, the water too (which collide projects again).
+    projectColliders(d, p, colliders, colliderCount, collisionRadiusScale, t.dt, c.frictionScale);
+  } else if (c.jacobiVertexCount < c.vertexCount) {
+    // The chebyshev cloths were projected by their solve's last phase.
+    forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
+      const int i = c.vertexSlot[v];
+      const Float4 xp = p.predicted[i];
+      if (xp.w == 0.f || c.solvedByJacobi[v]) return;
+      const float r = collisionRadiusScale * p.radius[i];
+      const float friction = c.frictionScale ? c.frictionScale[v] : 1.f;
+      p.predicted[i] = Float4(
+          projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, t.h(), friction), xp.w);
+    }, "cloth.substep.colliders");
+  }
+  if (oneSubstep) a.contacts->separate(a.substepView);
+  a.contacts->uncross(a.substepView);
+}
 }  // namespace
 
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
-                  float bendExponent, ClothSubstepScratch s, const ClothContactPasses& contacts) {
-  ClothView c = cloth.view();
-  c.bendExponent = bendExponent;
-  const float h = dt / float(substeps);
+                  float collisionRadiusScale, Vec3 gravity, SubstepTime t, SubstepClock* clock, int knownSubsteps,
+                  int iterations, float rho, ClothSubstepScratch s, const ClothContactPasses& contacts) {
+  const ClothView c = cloth.view();
+  const float dt = t.dt;
+  const bool oneSubstep = knownSubsteps == 1;
   // One sub-step is the step itself: its free motion is the predict stage's
   // x* as it stands, its start the step's, and it carries no velocity to a
   // next sub-step nor leaves one to fix.
-  const bool oneSubstep = substeps == 1;
   ParticleView substepView = p;  // position: the sub-step's start
   if (!oneSubstep) {
     // Non-cloth particles keep their place in the sub-step view.
@@ -120,55 +193,17 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
       s.velocity[i] = (p.predicted[i].xyz() - x) * (1.f / dt) - gravity * dt;
     }, "cloth.substep.begin");
   }
-  for (int sub = 0; sub < substeps; ++sub) {
-    const float along = float(sub + 1) / float(substeps);
-    const bool last = sub + 1 == substeps;
-    const bool afterSubstep = sub > 0;  // the sub-step before this one ends here
-    forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
-      const int i = c.vertexSlot[v];
-      if (afterSubstep) endSubstep(p, s, i, h);
-      const Float4 x = p.position[i];
-      if (x.w == 0.f) {
-        const int k = c.attachCollider[v];
-        // Attached vertices follow their collider's path, reaching its end
-        // point with the last sub-step; fixed pins stay.
-        const Vec3 target = k >= 0 ? c.restPosition[v] + colliders[k].displacement : x.xyz();
-        p.predicted[i] = Float4(last ? target : x.xyz() + (target - x.xyz()) * along, 0.f);
-        return;
-      }
-      if (oneSubstep) return;
-      const Vec3 vel = s.velocity[i] + gravity * h;
-      s.velocity[i] = vel;
-      p.predicted[i] = Float4(s.start[i].xyz() + vel * h, x.w);
-    }, "cloth.substep.predict");
-    if (!oneSubstep) contacts.separate(substepView);
-    cloth.resetMultipliers();
-    solveClothConstraints(d, p, c, cloth.edgeColourStart(), cloth.bendColourStart(), iterations, h);
-    solveClothJacobi(d, p, c, iterations, h, rho, colliders, colliderCount, collisionRadiusScale,
-                     oneSubstep ? nullptr : s.start);
-    if (oneSubstep) {
-      // The paper's single pass projects every particle out of the
-      // colliders here, the water too (which collide projects again).
-      projectColliders(d, p, colliders, colliderCount, collisionRadiusScale, h, c.frictionScale);
-    } else if (c.jacobiVertexCount < c.vertexCount) {
-      // The chebyshev cloths were projected by their solve's last phase.
-      forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
-        const int i = c.vertexSlot[v];
-        const Float4 xp = p.predicted[i];
-        if (xp.w == 0.f || c.solvedByJacobi[v]) return;
-        const float r = collisionRadiusScale * p.radius[i];
-        const float friction = c.frictionScale ? c.frictionScale[v] : 1.f;
-        p.predicted[i] =
-            Float4(projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, h, friction), xp.w);
-      }, "cloth.substep.colliders");
-    }
-    if (oneSubstep) contacts.separate(substepView);
-    contacts.uncross(substepView);
-    if (oneSubstep) return;
+  const Substep one{d, p, substepView, &cloth, colliders, colliderCount, collisionRadiusScale, gravity, t,
+                    oneSubstep, iterations, rho, s, &contacts};
+  auto substep = [&one] { runSubstep(one); };
+  if (oneSubstep) {
+    substep();
+    return;
   }
+  repeatOnDevice(d, &clock->substep, &clock->substeps, knownSubsteps, substep);
   forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
     const int i = c.vertexSlot[v];
-    endSubstep(p, s, i, h);
+    endSubstep(p, s, i, t.h());
     const Float4 x = p.position[i];
     if (x.w == 0.f) return;
     s.velocityFix[i] = s.velocity[i] - (p.predicted[i].xyz() - x.xyz()) * (1.f / dt);

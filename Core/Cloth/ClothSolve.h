@@ -4,24 +4,26 @@
 #include <vector>
 
 #include "Cloth/ClothSystem.h"
+#include "Cloth/SubstepClock.h"
 #include "Physics/Collider.h"
 
 namespace soak {
 
 // `iterations` rounds of stretch (Eq. 8) and bend (Eq. 9) projections, one
-// colour at a time (Gauss-Seidel between colours, parallel within one).
+// colour at a time (Gauss-Seidel between colours, parallel within one),
+// with the sub-step's length as XPBD's time step.
 void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vector<int>& stretchColours,
-                           const std::vector<int>& bendColours, int iterations, float dt);
+                           const std::vector<int>& bendColours, int iterations, SubstepTime t);
 
 // `iterations` Jacobi-Chebyshev iterations (ClothJacobi.h) over the vertices
-// of the chebyshev cloths, for a sub-step of length h; rho is the spectral
+// of the chebyshev cloths, for the sub-step under way (t); rho is the spectral
 // radius the Chebyshev weights assume. One dependent phase per iteration.
 // The colliders are terms of the energy (ClothJacobi.h, addColliderTerms),
 // with each particle's collision radius times collisionRadiusScale as margin.
 // With substepStart (per particle slot, the sub-step's start), the result is
 // then projected out of the colliders with friction over the sub-step's
 // motion from there, as substepCloth does for the other cloths.
-void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, float h, float rho,
+void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, SubstepTime t, float rho,
                       const Collider* colliders, int colliderCount, float collisionRadiusScale,
                       const Float4* substepStart);
 
@@ -39,7 +41,7 @@ struct ClothSubstepScratch {
   Vec3* velocityFix = nullptr;  // out: end velocity minus (x* - x) / dt; 0 for non-cloth particles
 };
 
-// The cloth part of one step in `substeps` sub-steps of h = dt / substeps
+// The cloth part of one step in the clock's sub-steps of h = dt / count
 // (Macklin et al. 2019, "Small steps in physics simulation"): each sub-step
 // integrates gravity over h, moves attached vertices along their collider's
 // path, separates touching layers (contacts.separate), runs `iterations`
@@ -55,10 +57,13 @@ struct ClothSubstepScratch {
 // sub-steps of n iterations leave far less than one step of K n
 // (Doc/model.md, "Cloth sub-steps"). Writes the cloth's predicted positions
 // and velocityFix, which finalize adds to (x* - x) / dt so that a cloth
-// particle leaves the step with its last sub-step's velocity. bendExponent:
-// ClothView::bendExponent (1 where the step takes the configured sub-steps).
+// particle leaves the step with its last sub-step's velocity.
+// The count is the clock's (SubstepClock.h; written on the device, its
+// `substep` 0): the sub-steps run as a device loop (Backend/DeviceLoop.h),
+// so on the GPU the host need not know it. knownSubsteps: the count where
+// the host knows it, else 0; 1 is the paper's single pass.
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                  float collisionRadiusScale, Vec3 gravity, float dt, int substeps, int iterations, float rho,
-                  float bendExponent, ClothSubstepScratch scratch, const ClothContactPasses& contacts);
+                  float collisionRadiusScale, Vec3 gravity, SubstepTime t, SubstepClock* clock, int knownSubsteps,
+                  int iterations, float rho, ClothSubstepScratch scratch, const ClothContactPasses& contacts);
 
 }  // namespace soak

@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "Backend/Buffer.h"
-#include "Backend/DownloadQueue.h"
 #include "Cloth/AdaptiveSubsteps.h"
+#include "Cloth/SubstepClock.h"
 #include "Cloth/ClothContactLists.h"
 #include "Cloth/ClothSystem.h"
 #include "Physics/Collider.h"
@@ -35,50 +35,50 @@ class ClothStep {
   ~ClothStep();
   // With Simulation.clothSubstepTravel: queues the measurement of how far
   // the cloth travels this step (AdaptiveSubsteps.h) from the velocities
-  // the predict stage left, for run() to read without waiting on the
-  // stages in between. The predict stage calls it.
+  // the predict stage left, on the device, for run() to choose the step's
+  // sub-steps from. The predict stage calls it.
   // With Simulation.clothStrainTarget as well, the strain the step before
-  // left (AdaptiveSubsteps.h), in the same copy.
+  // left (AdaptiveSubsteps.h).
   void measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget);
+  // Chooses the step's sub-steps on the device (SubstepClock.h) and runs
+  // them. The host reads the count only where it may be 1 (sub-steps from
+  // the speed with Simulation.clothSubsteps 1: one sub-step is the paper's
+  // single pass) or where the sub-steps cannot stay on the device (the
+  // CPU; a GPU step run stage by stage).
   void run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
            const ClothStepSettings& s);
   // After a sub-stepped run: per slot, the velocity the last sub-step left
   // minus (x* - x) / dt, which finalize adds (ClothSolve.h); else null.
   const Vec3* velocityFix() const { return substepped_ ? velocityFix_.data() : nullptr; }
-  // Sub-steps of the latest run(), and the dependent constraint phases of
-  // all runs together (ClothSystem::constraintPhasesPerStep).
-  int lastSubsteps() const { return lastSubsteps_; }
+  // Sub-steps of the latest run() (0 before the first), and the dependent
+  // constraint phases of all runs together
+  // (ClothSystem::constraintPhasesPerStep). Each reads the clock: a host
+  // wait on the GPU.
+  int lastSubsteps() const { return readClock().substeps; }
+  long long phasesTaken() const { return readClock().taken * phasesPerSubstep_; }
+  // The latest run's sub-step count in device memory, for a copy that does
+  // not wait (FrameCopy.h).
+  const int* substepCount() const { return &clock_.data()->substeps; }
   // The sub-steps the strain asks for (AdaptiveSubsteps.h; 0 before the
   // first step): state a checkpoint keeps.
-  StrainSubsteps strainSubsteps() const { return strainSubsteps_; }
-  void setStrainSubsteps(StrainSubsteps s) { strainSubsteps_ = s; }
-  long long phasesTaken() const { return phasesTaken_; }
+  StrainSubsteps strainSubsteps() const { return readClock().strain; }
+  void setStrainSubsteps(StrainSubsteps s);
 
  private:
+  SubstepClock readClock() const;
   Device device_;
   Buffer<Float4> contactScratch_;  // the particle contact passes' second buffer of x*
   ClothContactLists contactLists_;
   Buffer<int> crossingFlag_;  // the crossing guard's flags (CrossingGuard.h), 0 between sub-steps
   Buffer<Float4> substepStart_;
   Buffer<Vec3> substepVelocity_, velocityFix_;
-  // What measureTravel queued: the largest travel, and the strain counts
-  // where it measured the strain.
-  struct Measured {
-    float travel = 0.f;
-    bool strain = false;
-    int above = 0, aboveQuarter = 0;
-  };
-  Measured takeMeasured(ParticleView p, ClothSystem& cloth, float dt, float strainTarget);
+  Buffer<SubstepClock> clock_;  // one
   Buffer<float> vertexTravel_;  // per vertex, AdaptiveSubsteps.h
   Buffer<float> maxTravel_;     // one float: the largest
   Buffer<int> strainFlags_, strainScan_, strainCounts_;  // measureClothStrain's
-  bool strainQueued_ = false;
-  StrainSubsteps strainSubsteps_;
-  DownloadQueue travelDownload_;
-  std::unique_ptr<DownloadQueue::Transfer> travelMeasured_;  // queued by measureTravel, read by run
+  bool travelQueued_ = false, strainQueued_ = false;  // what measureTravel queued this step
   bool substepped_ = false;
-  int lastSubsteps_ = 0;
-  long long phasesTaken_ = 0;
+  long long phasesPerSubstep_ = 0;
 };
 
 }  // namespace soak

@@ -112,10 +112,6 @@ struct ClothView {
   const ClothBend* jacobiBends = nullptr;
   const float* jacobiBendRest = nullptr;
   const float* jacobiBendStiffness = nullptr;  // kPrime of Eq. 5 per sub-step
-  // A step of other than the configured sub-steps (AdaptiveSubsteps.h)
-  // bends with 1 - (1 - kPrime)^bendExponent a sub-step: configured over
-  // taken sub-steps, so that a step bends as much whatever it takes.
-  float bendExponent = 1.f;
   // Per vertex, from the published fields (Cloth/VertexFields.h); null: 1.
   const float* bendScale = nullptr;      // field::kBendStiffnessScale
   const float* frictionScale = nullptr;  // field::kFrictionScale

@@ -27,7 +27,6 @@ FrameCopy startFrameCopy(Simulation& sim, DownloadQueue& queue) {
   c.scalars.time = sim.time();
   c.scalars.drainedWaterMass = sim.drainedWaterMass;
   c.scalars.emittedWaterMass = sim.emittedWaterMass;
-  c.scalars.clothSubsteps = sim.lastClothSubsteps();
   ParticleState& ps = sim.particles;
   const ParticleView p = ps.view();
   c.count = p.count;
@@ -36,7 +35,8 @@ FrameCopy startFrameCopy(Simulation& sim, DownloadQueue& queue) {
   std::vector<DownloadQueue::Part> parts{part(p.position, p.count), part(p.velocity, p.count),
                                          part(p.mass, p.count),     part(p.radius, p.count),
                                          part(p.phase, p.count),    part(p.id, p.count),
-                                         part(sim.fluid.density(), c.densitySlots)};
+                                         part(sim.fluid.density(), c.densitySlots),
+                                         part(sim.clothSubstepCount(), 1)};
   // Compression at step 0 is not measured (stats show 0), as no solve has run.
   const float* compression = sim.stepIndex() > 0 ? sim.fluid.compressionPerParticle(p, sim.fluidContext()) : nullptr;
   c.compression = compression != nullptr;
@@ -64,6 +64,7 @@ FrameData finishFrameCopy(FrameCopy&& copy, DownloadQueue& queue) {
   f.phase = unpack<int>(t, k++, n);
   f.id = unpack<int>(t, k++, n);
   f.density = unpack<float>(t, k++, n);  // slots past densitySlots read 0
+  f.clothSubsteps = unpack<int>(t, k++, 1)[0];
   if (copy.compression) f.compression = unpack<float>(t, k++, n);
   for (int c = 0; c < copy.channels; ++c) f.channels.push_back(unpack<float>(t, k++, n));
   for (int parts : copy.moduleParts) {

@@ -109,8 +109,11 @@ class Simulation final : public CheckpointState, public FrameSource {
   double time() const { return time_; }
   // Cloth sub-steps of the latest step, and dependent cloth constraint phases
   // of all steps of this object (Simulation.clothSubstepTravel makes both
-  // vary; Cloth/AdaptiveSubsteps.h).
+  // vary; Cloth/AdaptiveSubsteps.h). Each reads the count from the device:
+  // a host wait on the GPU.
   int lastClothSubsteps() const { return stages_.cloth.lastSubsteps(); }
+  // The latest step's cloth sub-steps in device memory (FrameCopy.h).
+  const int* clothSubstepCount() const { return stages_.cloth.substepCount(); }
   long long clothPhasesTaken() const { return stages_.cloth.phasesTaken(); }
   // Largest support radius of any particle (cell size of the grid). Modules
   // that add particles with a larger radius must raise it.

@@ -1,10 +1,14 @@
 // Cloth sub-steps from the cloth's speed on the GPU (Cloth/AdaptiveSubsteps.h):
-// the travel the predict stage measures and the cloth stage reads back
-// gives the step the same sub-steps as on the CPU.
+// the travel the predict stage measures gives the step the same sub-steps
+// as on the CPU, chosen and run on the device (Cloth/SubstepClock.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
+
+#include "Backend/Device.h"
 
 #include "Support/TestScenes.h"
 
@@ -35,4 +39,48 @@ TEST(GpuAdaptiveSubsteps, AFallingSheetTakesTheSubstepsItDoesOnTheCpu) {
   std::printf("falling sheet, 40 steps: %d steps with another sub-step count on the GPU; last %d\n", differing, last);
   EXPECT_LE(differing, 2);
   EXPECT_EQ(last, 16);
+}
+
+TEST(GpuAdaptiveSubsteps, InAStepGraphTheSubstepsAreChosenAndRunWithoutAHostWait) {
+  SOAK_SKIP_WITHOUT_GPU();
+  // The falling sheet again, with step graphs (the count is chosen on the
+  // device and the sub-steps run as a graph's loop node) and without (the
+  // host reads the count and queues each sub-step): the same counts, the
+  // same sheet, and no host wait in a plain step with graphs.
+  const std::string scene =
+      "<Scene><Simulation clothIterations='6' clothSubsteps='2' clothSubstepTravel='0.5' clothMaxSubsteps='16' "
+      "cudaGraph='GRAPH'/>"
+      "<Cloth model='chebyshev' thickness='0.01' origin='-0.2 2 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
+      "height='0.4' cellsU='9' cellsV='9'/></Scene>";
+  auto with = [&](const char* graph) {
+    std::string xml = scene;
+    xml.replace(xml.find("GRAPH"), 5, graph);
+    return xml;
+  };
+  test::TestRegistry graphReg, plainReg;
+  auto graphs = test::makeSimulation(with("true"), Device::Cuda, graphReg);
+  auto plain = test::makeSimulation(with("false"), Device::Cuda, plainReg);
+  int waitingSteps = 0, differing = 0, most = 0;
+  for (int s = 1; s <= 40; ++s) {
+    const bool maintenance = graphs->maintenanceStep();
+    const unsigned long long before = hostWaits();
+    graphs->step();
+    if (!maintenance && hostWaits() != before) ++waitingSteps;
+    plain->step();
+    EXPECT_LE(std::abs(graphs->lastClothSubsteps() - plain->lastClothSubsteps()), 1) << "step " << s;
+    differing += graphs->lastClothSubsteps() != plain->lastClothSubsteps();
+    most = std::max(most, graphs->lastClothSubsteps());
+  }
+  const std::vector<Vec3> a = graphs->cloth.downloadVertexPositions(graphs->particles, 0);
+  const std::vector<Vec3> b = plain->cloth.downloadVertexPositions(plain->particles, 0);
+  ASSERT_EQ(a.size(), b.size());
+  float worst = 0.f;
+  for (std::size_t v = 0; v < a.size(); ++v) worst = std::max(worst, length(a[v] - b[v]));
+  std::printf("falling sheet with and without step graphs, 40 steps: %d plain steps waited, %d counts differ, "
+              "most %d sub-steps, vertices %.3g m apart at most\n",
+              waitingSteps, differing, most, double(worst));
+  EXPECT_EQ(waitingSteps, 0);
+  EXPECT_EQ(most, 16);
+  EXPECT_LE(differing, 2);
+  EXPECT_LT(worst, 1e-4f);  // the sheet fell about 0.5 m; cell 4.4 cm
 }

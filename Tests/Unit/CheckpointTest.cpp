@@ -159,21 +159,34 @@ TEST(Checkpoint, TwelveKillsAtRandomMomentsEndInFramesBitIdenticalToAnUninterrup
   std::printf("chaos: seed %u (SOAK_CHAOS_SEED=%u repeats these moments), start %.0f ms, whole run %.0f ms\n", seed,
               seed, startMs, wholeMs);
   std::mt19937 rng(seed);
-  // Each life is the start and up to a tenth of the work: twelve of them,
-  // about 60 % of the work less what each kill loses, end in a kill before
-  // the run is done; half pass the first checkpoint (2 of 40 frames).
-  std::uniform_real_distribution<double> workInLife(0.0, workMs / 10.0);
+  // Each life is killed at a random moment within its first three frames
+  // past what the folder listed when it started (a moment drawn from the
+  // frames it writes, not from the clock alone, so that a machine that is
+  // slower or faster than when the whole run was timed draws alike): twelve
+  // lives cover about two thirds of the run, and a kill falls anywhere
+  // between two checkpoints (every 2 frames).
+  const double frameMs = workMs / frames;
+  std::uniform_int_distribution<int> framesInLife(0, 2);
+  std::uniform_real_distribution<double> partOfFrame(0.0, 1.0);
   int kills = 0, restarts = 0, resumes = 0;
   for (int life = 0; life < 200; ++life) {
     const bool resume = pathExists(killed + "/checkpoint.soak");
+    const std::size_t listedAtStart = pvdFiles(killed + "/water.pvd").size();
     const pid_t pid = resume ? startSoak({"run", "--resume", killed, "--device", "cpu", "--quiet"})
                              : startSoak({"run", scene, "-o", killed, "--frames", std::to_string(frames), "--device",
                                           "cpu", "--quiet", "--checkpoint-every", "2", "--overwrite"});
     (resume ? resumes : restarts) += life > 0;
     if (kills < kKills) {
-      std::this_thread::sleep_for(std::chrono::microseconds(int(1000.0 * (startMs + workInLife(rng)))));
+      const std::size_t target = listedAtStart + 1 + std::size_t(framesInLife(rng));
       int status = 0;
-      if (waitpid(pid, &status, WNOHANG) == 0) {
+      bool running = true;
+      while ((running = waitpid(pid, &status, WNOHANG) == 0) && pvdFiles(killed + "/water.pvd").size() < target)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      if (running) {
+        std::this_thread::sleep_for(std::chrono::microseconds(int(1000.0 * frameMs * partOfFrame(rng))));
+        running = waitpid(pid, &status, WNOHANG) == 0;
+      }
+      if (running) {
         kill(pid, SIGKILL);
         waitpid(pid, &status, 0);
         ASSERT_TRUE(WIFSIGNALED(status));

@@ -1,0 +1,37 @@
+#pragma once
+// The cloth sub-steps' clock: which sub-step of how many, in device memory,
+// so that the step's count can be chosen on the device and its sub-steps
+// run as a device loop (Backend/DeviceLoop.h) with no host wait
+// (Doc/design.md, "Step graphs"). Every kernel of a sub-step reads its
+// length and place from here rather than taking them by value.
+#include "Base/HostDevice.h"
+#include "Cloth/AdaptiveSubsteps.h"
+
+namespace soak {
+
+struct SubstepClock {
+  int substep = 0;         // the sub-step under way, from 0
+  int substeps = 0;        // the step's count (0 before the first step)
+  long long taken = 0;     // sub-steps of all steps so far
+  StrainSubsteps strain;   // what the strain asks for (AdaptiveSubsteps.h): state a checkpoint keeps
+};
+
+// What a kernel needs to read the clock: where it is, the step's dt, and
+// the fewest sub-steps (Simulation.clothSubsteps), over which the bends'
+// stiffness is configured.
+struct SubstepTime {
+  const SubstepClock* clock = nullptr;
+  float dt = 0.f;
+  int fewest = 1;
+  SOAK_INLINE int count() const { return clock->substeps; }
+  SOAK_INLINE int index() const { return clock->substep; }
+  SOAK_INLINE float h() const { return dt / float(clock->substeps); }
+  // The fraction of the step done at the end of the sub-step under way.
+  SOAK_INLINE float along() const { return float(clock->substep + 1) / float(clock->substeps); }
+  SOAK_INLINE bool last() const { return clock->substep + 1 == clock->substeps; }
+  // ClothView's bends take 1 - (1 - k')^e a sub-step, e = fewest / count, so
+  // that a step bends alike whatever its count.
+  SOAK_INLINE float bendExponent() const { return float(fewest) / float(clock->substeps); }
+};
+
+}  // namespace soak
