@@ -192,17 +192,18 @@ void CatalystAdaptor::process(const SinkFrame& frame) {
 }
 
 void CatalystAdaptor::shutDown() {
-  std::unique_ptr<HoldGil> gil;
-  if (Py_IsInitialized()) gil = std::make_unique<HoldGil>();
-  live_.reset();
-  for (auto& p : pipelines_) p->Finalize();
-  pipelines_.clear();
+  {
+    std::unique_ptr<HoldGil> gil;
+    if (Py_IsInitialized()) gil = std::make_unique<HoldGil>();
+    live_.reset();
+    for (auto& p : pipelines_) p->Finalize();
+    pipelines_.clear();
+  }
+  // The processor may end Python itself; Python ends on the thread that
+  // started it, not at the program's exit on another.
   if (processor_) processor_->Finalize();
   processor_ = nullptr;
-  gil.reset();
-  // Python ends on the thread that started it, not at the program's exit
-  // on another.
-  if (startedPython_) vtkPythonInterpreter::Finalize();
+  if (startedPython_ && Py_IsInitialized()) vtkPythonInterpreter::Finalize();
 }
 
 }  // namespace soak

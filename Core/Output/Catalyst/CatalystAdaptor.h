@@ -15,6 +15,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include "Base/Error.h"
 #include "CatalystChannels.h"
 #include "LiveConnection.h"
 #include "Output/CatalystSettings.h"
