@@ -63,7 +63,9 @@ class CatalystAdaptor : public FrameSink {
   vtkSmartPointer<vtkCPProcessor> processor_;
   std::vector<vtkSmartPointer<vtkCPPythonScriptV2Pipeline>> pipelines_;
   std::unique_ptr<LiveConnection> live_;
-  bool startedPython_ = false;  // this thread started Python (not a Python program)
+  bool startedPython_ = false;
+  int framesDone_ = 0;
+  double secondsSpent_ = 0.0;  // in process(), for the closing line  // this thread started Python (not a Python program)
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
