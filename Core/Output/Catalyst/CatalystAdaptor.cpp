@@ -140,13 +140,19 @@ void CatalystAdaptor::threadMain() {
 }
 
 void CatalystAdaptor::initialize() {
+  // In a Python program (the soak module) ParaView sets itself up in that
+  // program's Python: with its GIL.
+  std::unique_ptr<HoldGil> hostGil;
+  if (Py_IsInitialized()) hostGil = std::make_unique<HoldGil>();
   processor_ = vtkSmartPointer<vtkCPProcessor>::New();
-  if (!processor_->Initialize()) throw InputError("ParaView Catalyst did not initialize (vtkCPProcessor)", settings_.where);
+  if (!processor_->Initialize())
+    throw InputError("ParaView Catalyst did not initialize (vtkCPProcessor)", settings_.where);
   if (!settings_.live.empty()) live_ = std::make_unique<LiveConnection>(parseLiveAddress(settings_.live));
   if (settings_.scripts.empty()) return;
   startedPython_ = !Py_IsInitialized();
   vtkPythonInterpreter::Initialize(0);  // 0: soak keeps its own SIGINT handling
   HoldGil gil;
+  setPythonEnvironment("SOAK_OUTPUT", runDirectory_);
   for (const std::string& script : settings_.scripts) {
     const std::string syntax = pythonSyntaxError(script);
     if (!syntax.empty()) throw InputError("the Catalyst script does not compile:\n" + syntax, script);

@@ -61,4 +61,14 @@ std::string pythonSyntaxError(const std::string& path) {
   return result;
 }
 
+void setPythonEnvironment(const std::string& name, const std::string& value) {
+  PyObject* os = PyImport_ImportModule("os");
+  PyObject* environ = os ? PyObject_GetAttrString(os, "environ") : nullptr;
+  PyObject* text = PyUnicode_FromString(value.c_str());
+  if (!environ || !text || PyMapping_SetItemString(environ, name.c_str(), text) != 0) PyErr_Clear();
+  Py_XDECREF(text);
+  Py_XDECREF(environ);
+  Py_XDECREF(os);
+}
+
 }  // namespace soak

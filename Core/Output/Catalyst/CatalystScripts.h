@@ -18,4 +18,8 @@ bool scriptDrawsPictures(const std::string& path);
 // interpreter initialized and the GIL held.
 std::string pythonSyntaxError(const std::string& path);
 
+// Sets os.environ[name] in Python (a Python program took its copy of the
+// environment when it started). Needs the GIL.
+void setPythonEnvironment(const std::string& name, const std::string& value);
+
 }  // namespace soak
