@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "Output/FrameArrays.h"
 #include "Output/PlyFiles.h"
 #include "Output/VdbFiles.h"
 #include "Output/WaterSurface.h"
@@ -91,6 +92,7 @@ void FrameWriter::captureLayout(const OutputLayout& layout) {
     }
     clothLayout_.push_back(std::move(l));
   }
+  if (sink_) sink_->start(layout);
   surfaceOn_ = layout.surfaceCellSize > 0.f;
   splatCellSize_ = layout.surfaceCellSize;
   splatIso_ = layout.surfaceIso;
@@ -133,8 +135,9 @@ void FrameWriter::writeFrame(FrameSource& source, int frame, double stepMs) {
 
   if (writerThreads_ == 0) {  // written here, on the stepping thread
     c->copy = source.startFrameCopy(*downloads_);
-    const Frame f = receive(*c);
-    commit(f, writeFiles(f));
+    Frame f = receive(*c);
+    const Written files = writeFiles(f);
+    commit(f, files);
     return;
   }
   {
@@ -174,9 +177,12 @@ FrameWriter::Frame FrameWriter::receive(Capture& c) const {
 }
 
 void FrameWriter::flush() {
-  std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait(lock, [&] { return committed_ == captured_; });
-  if (error_) std::rethrow_exception(error_);
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return committed_ == captured_; });
+    if (error_) std::rethrow_exception(error_);
+  }
+  if (sink_) sink_->finish();
 }
 
 // Each thread takes the oldest queued frame, writes its files, then waits
@@ -235,23 +241,13 @@ FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
   Written w;
   if (testDelaySeconds_ > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(testDelaySeconds_));
   // Water: sorted by id so frames list particles in a stable order.
-  std::vector<std::size_t> water;
-  for (std::size_t i = 0; i < c.phase.size(); ++i)
-    if (isWater(c.phase[i])) water.push_back(i);
-  std::sort(water.begin(), water.end(), [&](std::size_t a, std::size_t b) { return c.id[a] < c.id[b]; });
-  std::vector<Vec3> points(water.size());
-  PointArray v{"velocity", 3, {}}, m{"mass", 1, {}}, r{"radius", 1, {}}, ids{"id", 1, {}}, rho{"density", 1, {}};
-  for (std::size_t k = 0; k < water.size(); ++k) {
-    const std::size_t i = water[k];
-    points[k] = c.position[i].xyz();
-    v.values.insert(v.values.end(), {c.velocity[i].x, c.velocity[i].y, c.velocity[i].z});
-    m.values.push_back(c.mass[i]);
-    r.values.push_back(c.radius[i]);
-    ids.values.push_back(static_cast<float>(c.id[i]));
-    rho.values.push_back(c.density[i]);
-  }
+  const WaterArrays waterData = waterArrays(c);
+  const std::vector<std::size_t>& water = waterData.slots;
+  const std::vector<Vec3>& points = waterData.points;
+  const PointArray& m = waterData.data[1];
+  const PointArray& r = waterData.data[2];
   w.water = "water/" + frameName("water", f.frame, "vtu");
-  writeParticlesVtu(dir_ + "/" + w.water, points, {v, m, r, ids, rho}, settings_.compression);
+  writeParticlesVtu(dir_ + "/" + w.water, points, waterData.data, settings_.compression);
   // One splat for the surface mesh and the VDB level set.
   WaterSurfaceSettings splatSettings;
   splatSettings.cellSize = splatCellSize_;
@@ -260,7 +256,12 @@ FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
   if (surfaceOn_ || settings_.vdb) splat = splatRelativeDensity(points, m.values, r.values, restDensity_, splatSettings);
   if (surfaceOn_) {
     w.surface = "water_surface/" + frameName("water_surface", f.frame, "vtp");
-    writePolyDataVtp(dir_ + "/" + w.surface, contourRelativeDensity(splat, splatIso_), settings_.compression);
+    vtkSmartPointer<vtkPolyData> mesh = contourRelativeDensity(splat, splatIso_);
+    writePolyDataVtp(dir_ + "/" + w.surface, mesh, settings_.compression);
+    if (sink_) {
+      mesh->Register(nullptr);
+      w.surfaceMesh = std::shared_ptr<vtkPolyData>(mesh.GetPointer(), [](vtkPolyData* p) { p->UnRegister(nullptr); });
+    }
   }
   if (settings_.vdb) {
     WaterVdbFrame vdb;
@@ -280,19 +281,9 @@ FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
     writeWaterVdb(dir_ + "/water_vdb/" + frameName("water", f.frame, "vdb"), vdb, splat, splatSettings);
   }
   for (const ClothLayout& obj : clothLayout_) {
-    std::vector<Vec3> clothPoints(std::size_t(obj.vertexCount));
-    std::vector<PointArray> data{{"velocity", 3, std::vector<float>(3 * std::size_t(obj.vertexCount))}};
-    for (const std::string& name : channelNames_)
-      data.push_back({name, 1, std::vector<float>(std::size_t(obj.vertexCount))});
-    for (std::size_t i = 0; i < c.phase.size(); ++i) {
-      if (c.phase[i] != obj.phase) continue;
-      const std::size_t local = std::size_t(c.id[i] - obj.firstVertex);
-      clothPoints[local] = c.position[i].xyz();
-      data[0].values[3 * local] = c.velocity[i].x;
-      data[0].values[3 * local + 1] = c.velocity[i].y;
-      data[0].values[3 * local + 2] = c.velocity[i].z;
-      for (std::size_t k = 0; k < channelNames_.size(); ++k) data[k + 1].values[local] = c.channels[k][i];
-    }
+    ClothArrays cloth = clothArrays(c, obj.phase, obj.firstVertex, obj.vertexCount, channelNames_);
+    std::vector<Vec3>& clothPoints = cloth.points;
+    const std::vector<PointArray>& data = cloth.data;
     w.cloth.push_back(obj.collection + "/" + frameName(obj.collection, f.frame, "vtp"));
     writeMeshVtp(dir_ + "/" + w.cloth.back(), clothPoints, obj.triangles, data, settings_.compression);
     if (settings_.ply) {
@@ -310,14 +301,22 @@ FrameWriter::Written FrameWriter::writeFiles(const Frame& f) const {
   return w;
 }
 
-// Lists the frame, once all its files are on disk.
-void FrameWriter::commit(const Frame& f, const Written& files) {
+// Lists the frame, once all its files are on disk, then hands it to the
+// sink (which may wait here while its queue is full).
+void FrameWriter::commit(Frame& f, const Written& files) {
   const double time = f.data.time;
   water_.add(time, files.water);
   if (surfaceOn_) surface_->add(time, files.surface);
   for (std::size_t k = 0; k < files.cloth.size(); ++k) cloth_[k]->add(time, files.cloth[k]);
   writeStatsRow(f.stats);
   ++frames_;
+  if (sink_ && sink_->wants(f.frame)) {
+    auto frame = std::make_shared<SinkFrame>();
+    frame->frame = f.frame;
+    frame->data = std::move(f.data);
+    frame->surface = files.surfaceMesh;
+    sink_->consume(std::move(frame));
+  }
 }
 
 void FrameWriter::writeStatsRow(const StatsRow& row) {

@@ -17,6 +17,7 @@
 #include "Output/PvdCollection.h"
 #include "Output/VtkFiles.h"
 #include "Registry/Module.h"
+#include "Output/FrameSink.h"
 #include "Output/FrameSource.h"
 
 namespace soak {
@@ -68,6 +69,13 @@ class FrameWriter {
   // Seconds the stepping thread spent in writeFrame (queueing the copies,
   // and any wait for a full queue), over all frames.
   double captureSeconds() const { return captureSeconds_; }
+  // Hands every frame, after its files are listed, to `sink` too (the
+  // Catalyst adaptor). The sink must outlive the writer; attach it before
+  // the first frame. A sink slower than the simulation makes the writer
+  // wait, and then the steps (waitedForSink).
+  void attachSink(FrameSink* sink) { sink_ = sink; }
+  // Whether the writer had to wait for the sink.
+  bool waitedForSink() const { return sink_ && sink_->waited(); }
   // Tests: each writer thread sleeps this long before writing a frame (a
   // slow disk on purpose).
   void setWriteDelayForTesting(double seconds) { testDelaySeconds_ = seconds; }
@@ -119,11 +127,12 @@ class FrameWriter {
   struct Written {
     std::string water, surface;
     std::vector<std::string> cloth;
+    std::shared_ptr<vtkPolyData> surfaceMesh;  // for the sink (holds a VTK reference)
   };
   void captureLayout(const OutputLayout& layout);
   Frame receive(Capture& c) const;
   Written writeFiles(const Frame& f) const;
-  void commit(const Frame& f, const Written& files);
+  void commit(Frame& f, const Written& files);
   void writerLoop();
   void writeStatsRow(const StatsRow& row);
 
@@ -166,6 +175,7 @@ class FrameWriter {
   std::atomic<bool> waitedForDisk_{false};
   double testDelaySeconds_ = 0.0;
   double captureSeconds_ = 0.0;
+  FrameSink* sink_ = nullptr;
 };
 
 // Creates a directory and its parents; throws InputError if impossible.

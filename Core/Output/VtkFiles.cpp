@@ -21,6 +21,7 @@
 
 #include "Base/Error.h"
 #include "Output/StorageFailure.h"
+#include "Output/VtkPolyData.h"
 
 namespace soak {
 
@@ -90,18 +91,45 @@ void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points,
   configureAndWrite(w.GetPointer(), path, compression);
 }
 
-void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
-                  const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data,
-                  Compression compression) {
-  vtkNew<vtkPolyData> poly;
+vtkSmartPointer<vtkPolyData> meshPolyData(const std::vector<Vec3>& points,
+                                          const std::vector<std::array<int, 3>>& triangles,
+                                          const std::vector<PointArray>& data) {
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(makePoints(points));
   vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(vtkIdType(triangles.size()), 3 * vtkIdType(triangles.size()));
   for (const auto& t : triangles) {
     vtkIdType ids[3] = {t[0], t[1], t[2]};
     polys->InsertNextCell(3, ids);
   }
   poly->SetPolys(polys);
   addPointData(poly->GetPointData(), data, points.size());
+  return poly;
+}
+
+vtkSmartPointer<vtkPolyData> particlesPolyData(const std::vector<Vec3>& points, const std::vector<PointArray>& data) {
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(makePoints(points));
+  const vtkIdType n = static_cast<vtkIdType>(points.size());
+  vtkNew<vtkIdTypeArray> offsets, conn;
+  offsets->SetNumberOfValues(n + 1);
+  conn->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    offsets->SetValue(i, i);
+    conn->SetValue(i, i);
+  }
+  offsets->SetValue(n, n);
+  vtkNew<vtkCellArray> verts;
+  verts->SetData(offsets, conn);
+  poly->SetVerts(verts);
+  addPointData(poly->GetPointData(), data, points.size());
+  return poly;
+}
+
+void writeMeshVtp(const std::string& path, const std::vector<Vec3>& points,
+                  const std::vector<std::array<int, 3>>& triangles, const std::vector<PointArray>& data,
+                  Compression compression) {
+  vtkSmartPointer<vtkPolyData> poly = meshPolyData(points, triangles, data);
   vtkNew<vtkXMLPolyDataWriter> w;
   w->SetInputData(poly);
   configureAndWrite(w.GetPointer(), path, compression);

@@ -1,4 +1,4 @@
-// The output elements Core provides: <Camera>, <Output>, <WaterSurface>.
+// The output elements Core provides: <Camera>, <Output>, <WaterSurface>, <Catalyst>.
 #include <algorithm>
 #include <cmath>
 
@@ -78,6 +78,22 @@ class WaterSurfaceModule : public Module {
   std::string where_;
 };
 
+// <Catalyst>'s parameters, as the scene writes them.
+struct CatalystParams {
+  std::string script;
+  int every = 1;
+  std::string live;
+};
+
+class CatalystModule : public Module {
+ public:
+  explicit CatalystModule(CatalystSettings s) : s_(std::move(s)) {}
+  void configure(Simulation& sim) override { sim.settings.catalyst = s_; }
+
+ private:
+  CatalystSettings s_;
+};
+
 }  // namespace
 
 void registerOutputElements(ModuleRegistry& r) {
@@ -135,6 +151,34 @@ void registerOutputElements(ModuleRegistry& r) {
         .real("iso", &WaterSurfaceSettings::iso, "", "Relative density (rho / rho0) of the surface.", 0.0, 10.0, true);
     r.add(decl.makeUnique().create([surface](const ElementParams& p) {
       return std::make_unique<WaterSurfaceModule>(surface.read(p), p.where());
+    }));
+  }
+  {
+    ElementDecl decl("Catalyst",
+                     "Runs ParaView Catalyst Python scripts on the frames while the simulation goes on (pictures, "
+                     "extracts, in situ), and connects to a ParaView GUI for Catalyst Live; `soak run --catalyst "
+                     "SCRIPT.py --live HOST:PORT` does the same (Doc/paraview.md, \"In situ and live\").",
+                     "Output");
+    ParamBinding<CatalystParams> catalyst(decl);
+    catalyst
+        .inputFile("script", &CatalystParams::script,
+                   "Catalyst Python script (ParaView 5.9+: File > Save Catalyst State, or by hand), relative to the "
+                   "scene; empty: none (Live only).")
+        .integer("every", &CatalystParams::every, "Run the scripts (and send Live) on every N-th output frame.", 1,
+                 1000000)
+        .text("live", &CatalystParams::live,
+              "HOST:PORT of a ParaView GUI listening on Catalyst > Connect (port 22222 by default); empty: no Live.");
+    r.add(decl.makeUnique().create([catalyst](const ElementParams& p) {
+      const CatalystParams c = catalyst.read(p);
+      CatalystSettings s;
+      if (!c.script.empty()) s.scripts.push_back(p.resolvePath(c.script));
+      s.every = c.every;
+      s.live = c.live;
+      s.where = p.where();
+      if (!s.live.empty()) parseLiveAddress(s.live, p.where());
+      if (!s.wanted())
+        throw InputError("<Catalyst> needs a script, a live address, or both", p.where());
+      return std::make_unique<CatalystModule>(s);
     }));
   }
 }

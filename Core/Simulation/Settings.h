@@ -4,6 +4,7 @@
 
 #include "Base/Vec3.h"
 #include "Fluid/WaterSettings.h"
+#include "Output/CatalystSettings.h"
 #include "Output/OutputSettings.h"
 
 namespace soak {
@@ -49,6 +50,7 @@ struct SimulationSettings {
   std::optional<WaterSurfaceSettings> surface;  // a water surface mesh per frame where set (<WaterSurface>)
   ResourceLimits limits;
   OutputSettings output;        // <Output>
+  CatalystSettings catalyst;    // <Catalyst>, and `soak run --catalyst/--live` added to it
   std::string where;            // <Simulation>'s file:line (empty when the scene has none)
 };
 

@@ -13,6 +13,7 @@
 
 #include "Base/Error.h"
 #include "DeviceArrayPython.h"
+#include "Output/CatalystLoader.h"
 #include "Output/FrameWriter.h"
 #include "Output/OutputFolder.h"
 #include "Output/RunFolder.h"
@@ -99,7 +100,8 @@ class PySimulation {
   }
 
   // Writes a run as `soak run` does, from the scene's initial state.
-  py::dict run(const std::string& output, int frames, double time, int checkpointEvery, bool overwrite) {
+  py::dict run(const std::string& output, int frames, double time, int checkpointEvery, bool overwrite,
+               const std::vector<std::string>& catalyst, int catalystEvery, const std::string& live) {
     Simulation& s = sim();
     if (s.stepIndex() != 0)
       throw std::runtime_error("run() starts from the scene's initial state, and this simulation has been stepped "
@@ -119,14 +121,24 @@ class PySimulation {
     options.checkpointHeader.checkpointEvery = checkpointEvery;
     const int planned = Runner(s, nullptr).plannedFrames(options);
     s.checkPlannedParticles(planned / s.settings.frameRate);
+    // The scene's <Catalyst> with these scripts added (`soak run --catalyst`).
+    CatalystSettings catalystSettings = s.settings.catalyst;
+    for (const std::string& script : catalyst) catalystSettings.scripts.push_back(script);
+    if (catalystEvery > 0) catalystSettings.every = catalystEvery;
+    if (!live.empty()) catalystSettings.live = live;
+    if (!catalystSettings.live.empty()) parseLiveAddress(catalystSettings.live, "live");
     RunProgress result;
     int written = 0;
     {
       py::gil_scoped_release release;
       std::lock_guard<std::mutex> lock(mutex_);
       generation_->bump();
+      // Without the GIL: the adaptor's thread takes it for ParaView's Python.
+      std::unique_ptr<FrameSink> sink;
+      if (catalystSettings.wanted()) sink = loadCatalyst(catalystSettings, output);
       const RunFolderLock folderLock = claimRunFolder(output, claim);
       FrameWriter writer(output, scene.textAsRun(), FrameWriter::Start::Fresh, s.settings.output);
+      writer.attachSink(sink.get());
       Runner runner(s, &writer);
       bool interrupted = false;
       try {
@@ -299,9 +311,12 @@ Simulation(path=None, *, xml=None, device="auto", overrides=None, plugins=None)
            "Advances by whole steps until `seconds` more are simulated; returns the steps taken.")
       .def("run", &PySimulation::run, py::arg("output"), py::kw_only(), py::arg("frames") = -1,
            py::arg("time") = -1.0, py::arg("checkpoint_every") = 0, py::arg("overwrite") = false,
+           py::arg("catalyst") = std::vector<std::string>{}, py::arg("catalyst_every") = 0, py::arg("live") = "",
            "Writes a run into `output` as `soak run` does (frames=N or time=T; the scene's duration by default), "
            "from the scene's initial state. `output` must be new or empty, as for `soak run`; overwrite=True "
-           "replaces the run already there. Returns frames_written, steps, wall_seconds, simulated_seconds.")
+           "replaces the run already there. catalyst=[SCRIPT.py, ...], catalyst_every=N and live=\"HOST:PORT\" "
+           "are `soak run`'s --catalyst, --catalyst-every and --live (Doc/paraview.md, \"In situ and live\"). "
+           "Returns frames_written, steps, wall_seconds, simulated_seconds.")
       .def("fields", [](PySimulation& s) { return arrayFieldNames(s.sim()); },
            "Names get() and set() take: the particle arrays, then the channels (saturation, held_water, ...).")
       .def("get",

@@ -7,12 +7,14 @@
 # (Doc/python.md), OpenVDB (whose CMake module also asks for Boost.Iostreams) for the .vdb
 # export (Doc/output.md); Blender for the tests of the Blender add-on (Demos/blender,
 # Doc/output.md "Blender"); Slurm and munge for the test that runs `soak sweep` on a
-# one-node Slurm (Doc/sweeps.md).
+# one-node Slurm (Doc/sweeps.md); ParaView's Catalyst (paraview-dev, python3-paraview) with
+# Python's headers (python3-dev) for the Catalyst adaptor, Xvfb for its pictures in the tests
+# (Doc/paraview.md, "In situ and live").
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libpugixml-dev libgtest-dev libtinyobjloader-dev
-  paraview-dev python3-paraview
+  paraview-dev python3-paraview python3-dev
   xvfb python3-matplotlib
   pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-venv python3-pip libopenvdb-dev libboost-iostreams-dev
   clang libclang-rt-14-dev libomp-dev

@@ -5,6 +5,7 @@
 
 #include "Base/Error.h"
 #include "Base/MessageText.h"
+#include "Output/CatalystSettings.h"
 #include "Simulation/Runner.h"
 
 namespace soak::cli {
@@ -41,6 +42,11 @@ const char* kUsage =
     "                            and when interrupted (the latest replaces the one before)\n"
     "  --resume DIR              continue the run in DIR from its checkpoint; --frames or --time\n"
     "                            may extend it; the scene is DIR's scene.xml, unchanged\n"
+    "  --catalyst SCRIPT.py      run a ParaView Catalyst script on the frames while the run goes on\n"
+    "                            (repeatable; Doc/paraview.md, \"In situ and live\")\n"
+    "  --catalyst-every N        run the Catalyst scripts (and Live) on every N-th frame only\n"
+    "  --live HOST:PORT          Catalyst Live: send the frames to a ParaView listening on\n"
+    "                            Catalyst > Connect (port 22222 by default); its Pause pauses the run\n"
     "\n"
     "exit codes: 0 success, 1 internal error, 2 bad input (nothing written),\n"
     "            3 device unavailable, failed or out of memory, 4 simulation unstable,\n"
@@ -90,6 +96,12 @@ RunArguments parseRunArguments(const std::vector<std::string>& args) {
     else if (a == "--checkpoint-every") r.checkpointEvery = toInteger(a, value(), 1, kMaxRunFrames);
     else if (a == "--resume") r.resume = value();
     else if (a == "--overwrite") r.overwrite = true;
+    else if (a == "--catalyst") r.catalystScripts.push_back(value());
+    else if (a == "--catalyst-every") r.catalystEvery = toInteger(a, value(), 1, kMaxRunFrames);
+    else if (a == "--live") {
+      r.live = value();
+      parseLiveAddress(r.live, "--live");
+    }
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see soak help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene per run)");

@@ -33,6 +33,9 @@ struct RunArguments {
   int checkpointEvery = 0;  // 0: no checkpoints
   std::string resume;       // output folder of a run to continue
   bool overwrite = false;   // replace the run already in the output folder
+  std::vector<std::string> catalystScripts;  // --catalyst SCRIPT.py (repeatable)
+  int catalystEvery = 0;    // --catalyst-every N; 0: the scene's (<Catalyst every>), else 1
+  std::string live;         // --live HOST:PORT
 };
 
 // Parses the arguments after "run". Throws InputError with usage help.

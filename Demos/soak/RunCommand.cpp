@@ -16,6 +16,7 @@
 #include "Base/Error.h"
 #include "Base/ReadInput.h"
 #include "Checkpoint/Checkpoint.h"
+#include "Output/CatalystLoader.h"
 #include "Output/FrameWriter.h"
 #include "Output/OutputFolder.h"
 #include "Output/RunFolder.h"
@@ -78,6 +79,15 @@ void printProfile(const Simulation& sim) {
   std::printf("  %-22s %10.4f\n", "total", total);
 }
 
+// The scene's <Catalyst> with the command line's scripts added and its
+// --catalyst-every and --live in place of the scene's.
+CatalystSettings catalystFor(const RunArguments& args, CatalystSettings s) {
+  for (const std::string& script : args.catalystScripts) s.scripts.push_back(script);
+  if (args.catalystEvery > 0) s.every = args.catalystEvery;
+  if (!args.live.empty()) s.live = args.live;
+  return s;
+}
+
 }  // namespace
 
 int runCommand(const RunArguments& args) {
@@ -98,11 +108,18 @@ int runCommand(const RunArguments& args) {
   RunOptions& options = run.options;
   const int planned = run.plannedFrames;
 
+  // Catalyst (<Catalyst>, --catalyst, --live): loaded and its scripts
+  // checked before anything is written; it outlives the writer.
+  std::unique_ptr<FrameSink> catalyst;
+  const CatalystSettings catalystSettings = catalystFor(args, sim.settings.catalyst);
+  if (catalystSettings.wanted()) catalyst = loadCatalyst(catalystSettings, out);
+
   // The folder is the run's from here on (RunFolder.h): created, locked
   // until the process ends, and an earlier run removed with --overwrite.
   const RunFolderLock folderLock = claimRunFolder(out, run.claim);
   FrameWriter writer(out, scene.textAsRun(), checkpoint ? FrameWriter::Start::Resume : FrameWriter::Start::Fresh,
                      sim.settings.output);
+  writer.attachSink(catalyst.get());
   Runner writingRunner(sim, &writer);
   if (checkpoint) {
     checkpoint->restore(writer, sim);
@@ -131,10 +148,17 @@ int runCommand(const RunArguments& args) {
   ProgressReport progress(args.quiet);
   sim.checkStages = args.checkStages;
   RunProgress result;
-  bool toldDiskBound = false;
+  bool toldDiskBound = false, toldCatalystBound = false;
   try {
     result = writingRunner.run(options, [&](const RunProgress& p) {
       progress.update(p);
+      if (writer.waitedForSink() && !toldCatalystBound && !args.quiet) {
+        toldCatalystBound = toldDiskBound = true;
+        progress.finish();
+        std::fprintf(stderr,
+                     "soak: Catalyst's pipelines are slower than the simulation: steps now wait for them "
+                     "(--catalyst-every N or <Catalyst every=\"N\"/> runs them on every N-th frame)\n");
+      }
       if (writer.waitedForDisk() && !toldDiskBound && !args.quiet) {
         toldDiskBound = true;
         progress.finish();
