@@ -80,12 +80,14 @@ struct JacobiSums {
 };
 
 // The stretch term of edge (x_i, x_j) at rest length l0 (Eq. 8), or of a
-// stretch limit (unilateral: nothing while not longer than l0).
+// stretch limit (unilateral: nothing while not longer than l0). Whether a
+// limit pulls is decided on the squared length, so the slack ones (most of
+// a sheet's about 20 a vertex) cost no square root.
 SOAK_INLINE void addStretchTerm(JacobiSums& s, Vec3 xi, Vec3 xj, float rest, float stiffness, bool unilateral) {
   const Vec3 d = xi - xj;
-  const float len = length(d);
-  if (len < 1e-12f || (unilateral && len <= rest)) return;
-  s.add(xj + d * (rest / len), stiffness);
+  const float len2 = lengthSquared(d);
+  if (len2 < 1e-24f || (unilateral && len2 <= rest * rest)) return;
+  s.add(xj + d * (rest / sqrtf(len2)), stiffness);
 }
 
 // Weight of a collider's term: a contact is as hard as a constraint gets,
