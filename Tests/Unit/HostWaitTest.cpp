@@ -17,7 +17,9 @@ namespace {
 // falls past it into the sink, and a ball that moves along a path. Its
 // cloth sub-steps are fixed (`travel` 0); with sub-steps from the cloth's
 // speed (the chebyshev default, travel 0.5) the host reads the step's
-// sub-step count back (Cloth/ClothStep.h).
+// sub-step count back on the CPU and in a GPU step queued kernel by kernel;
+// in a GPU step graph it does not (Backend/DeviceLoop.h,
+// Tests/Gpu/GpuAdaptiveSubstepsTest.cpp).
 std::unique_ptr<Simulation> dripScene(test::TestRegistry& reg, const std::string& travel = "0") {
   return test::makeSimulation(
       "<Scene><Simulation timeStep='0.005' domainMin='-2 -1 -2' domainMax='2 3 2' clothSubstepTravel='" + travel +
