@@ -169,7 +169,7 @@ void runSubstep(const Substep& a) {
 }  // namespace
 
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                  float collisionRadiusScale, Vec3 gravity, SubstepTime t, SubstepClock* clock, int knownSubsteps,
+                  float collisionRadiusScale, Vec3 gravity, SubstepTime t, int knownSubsteps,
                   int iterations, float rho, ClothSubstepScratch s, const ClothContactPasses& contacts) {
   const ClothView c = cloth.view();
   const float dt = t.dt;
@@ -200,7 +200,7 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     substep();
     return;
   }
-  repeatOnDevice(d, &clock->substep, &clock->substeps, knownSubsteps, substep);
+  repeatOnDevice(d, &t.clock->substep, &t.clock->substeps, knownSubsteps, substep);
   forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
     const int i = c.vertexSlot[v];
     endSubstep(p, s, i, t.h());

@@ -63,7 +63,7 @@ struct ClothSubstepScratch {
 // so on the GPU the host need not know it. knownSubsteps: the count where
 // the host knows it, else 0; 1 is the paper's single pass.
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                  float collisionRadiusScale, Vec3 gravity, SubstepTime t, SubstepClock* clock, int knownSubsteps,
+                  float collisionRadiusScale, Vec3 gravity, SubstepTime t, int knownSubsteps,
                   int iterations, float rho, ClothSubstepScratch scratch, const ClothContactPasses& contacts);
 
 }  // namespace soak

@@ -84,7 +84,7 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
     velocityFix_.resize(p.count);
   }
   substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity,
-               SubstepTime{clock_.data(), s.dt, s.substeps}, clock_.data(), known, s.iterations,
+               SubstepTime{clock_.data(), s.dt, s.substeps}, known, s.iterations,
                s.spectralRadius, {substepStart_.data(), substepVelocity_.data(), velocityFix_.data()}, contacts);
 }
 

@@ -20,7 +20,7 @@ struct SubstepClock {
 // the fewest sub-steps (Simulation.clothSubsteps), over which the bends'
 // stiffness is configured.
 struct SubstepTime {
-  const SubstepClock* clock = nullptr;
+  SubstepClock* clock = nullptr;  // written only by the loop that runs the sub-steps
   float dt = 0.f;
   int fewest = 1;
   SOAK_INLINE int count() const { return clock->substeps; }

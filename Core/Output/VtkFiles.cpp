@@ -67,14 +67,9 @@ void configureAndWrite(Writer* w, const std::string& path, Compression compressi
     throw storageFailure(path, w->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError ? ENOSPC : 0, tmp);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) throw storageFailure(path, errno, tmp);
 }
-}  // namespace
-
-void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points, const std::vector<PointArray>& data,
-                       Compression compression) {
-  vtkNew<vtkUnstructuredGrid> grid;
-  grid->SetPoints(makePoints(points));
-  const vtkIdType n = static_cast<vtkIdType>(points.size());
-  vtkNew<vtkCellArray> cells;
+// One vertex cell per point (the particles).
+vtkSmartPointer<vtkCellArray> vertexCells(std::size_t count) {
+  const vtkIdType n = static_cast<vtkIdType>(count);
   vtkNew<vtkIdTypeArray> offsets, conn;
   offsets->SetNumberOfValues(n + 1);
   conn->SetNumberOfValues(n);
@@ -83,8 +78,17 @@ void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points,
     conn->SetValue(i, i);
   }
   offsets->SetValue(n, n);
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsets, conn);
-  grid->SetCells(VTK_VERTEX, cells);
+  return cells;
+}
+}  // namespace
+
+void writeParticlesVtu(const std::string& path, const std::vector<Vec3>& points, const std::vector<PointArray>& data,
+                       Compression compression) {
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(makePoints(points));
+  grid->SetCells(VTK_VERTEX, vertexCells(points.size()));
   addPointData(grid->GetPointData(), data, points.size());
   vtkNew<vtkXMLUnstructuredGridWriter> w;
   w->SetInputData(grid);
@@ -110,18 +114,7 @@ vtkSmartPointer<vtkPolyData> meshPolyData(const std::vector<Vec3>& points,
 vtkSmartPointer<vtkPolyData> particlesPolyData(const std::vector<Vec3>& points, const std::vector<PointArray>& data) {
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(makePoints(points));
-  const vtkIdType n = static_cast<vtkIdType>(points.size());
-  vtkNew<vtkIdTypeArray> offsets, conn;
-  offsets->SetNumberOfValues(n + 1);
-  conn->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i < n; ++i) {
-    offsets->SetValue(i, i);
-    conn->SetValue(i, i);
-  }
-  offsets->SetValue(n, n);
-  vtkNew<vtkCellArray> verts;
-  verts->SetData(offsets, conn);
-  poly->SetVerts(verts);
+  poly->SetVerts(vertexCells(points.size()));
   addPointData(poly->GetPointData(), data, points.size());
   return poly;
 }

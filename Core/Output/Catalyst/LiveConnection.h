@@ -1,7 +1,7 @@
 #pragma once
-// Catalyst Live from the run's side: the channels as producers in the
-// Catalyst session, and a link to a ParaView GUI listening on Catalyst >
-// Connect. Each frame it offers the GUI the new data; while the GUI has
+// Catalyst Live from the run's side: the channels as producers that the
+// Catalyst pipelines read, and a link to a ParaView GUI listening on
+// Catalyst > Connect. Each frame it offers the GUI the new data; while the GUI has
 // the run paused (Catalyst > Pause Simulation) it waits, and so, once the
 // frame queue is full, do the steps. Without a listener the run goes on,
 // says so once, and connects when a GUI starts listening.
