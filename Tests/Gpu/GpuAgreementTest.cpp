@@ -18,6 +18,7 @@
 #include <map>
 
 #include "Support/JitteredSheet.h"
+#include "Support/TempFiles.h"
 #include "Support/TestScenes.h"
 
 using namespace soak;
@@ -185,7 +186,7 @@ TEST(GpuAgreement, ChebyshevMeshWithStretchLimitsWithinCpuSensitivity) {
   // under water: the same limits in the same per-vertex order on both
   // devices, so the same solve.
   SOAK_SKIP_WITHOUT_GPU();
-  const std::string obj = testing::TempDir() + "/gpu_jittered_sheet.obj";
+  const std::string obj = test::processTempPath("gpu_jittered_sheet.obj");
   test::writeObjFile(test::jitteredSheet(30, 0.6f, 0.3f, 0.5f, 5), obj);
   const std::string xml =
       "<Scene><Simulation clothSubsteps='2' clothIterations='30'/><Sphere center='0 0.3 0' radius='0.15' "

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "Support/FoldedSheet.h"
+#include "Support/TempFiles.h"
 #include "Support/TestScenes.h"
 
 using namespace soak;
@@ -14,7 +15,7 @@ TEST(GpuClothContact, FoldedSheetFallingOnTheFloorDoesNotPassThroughItself) {
   SOAK_SKIP_WITHOUT_GPU();
   const char* solvers[][2] = {{"", "model='pbd'"}, {"clothSubsteps='8' clothIterations='12'", "model='chebyshev'"}};
   for (const auto& solver : solvers) {
-    const float worst = test::FoldedSheet{}.smallestGapWhenDropped(Device::Cuda, testing::TempDir() + "/folded_gpu.obj",
+    const float worst = test::FoldedSheet{}.smallestGapWhenDropped(Device::Cuda, test::processTempPath("folded_gpu.obj"),
                                                                    solver[0], solver[1]);
     std::printf("CUDA, folded sheet (%s %s): smallest upper-minus-lower layer height %.4f m\n", solver[0], solver[1],
                 worst);

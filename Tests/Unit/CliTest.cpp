@@ -5,6 +5,7 @@
 #include <string>
 
 #include "SoakProcess.h"
+#include "Support/TempFiles.h"
 
 namespace {
 using Result = soak::test::SoakResult;
@@ -16,7 +17,7 @@ void writeFile(const std::string& path, const std::string& text) { soak::test::w
 
 TEST(Cli, TypoInSceneFailsWithLineAndNothingWritten) {
   std::string dir = tempDir("typo");
-  std::string scene = ::testing::TempDir() + "typo_scene.xml";
+  std::string scene = soak::test::processTempPath("typo_scene.xml");
   writeFile(scene, "<Scene>\n  <Simulation duration=\"0.1\"/>\n  <Plane/>\n  <Sphere center=\"0 0 0\" radus=\"0.2\"/>\n</Scene>\n");
   Result r = runSoak("run " + scene + " -o " + dir + " --quiet");
   EXPECT_EQ(r.code, 2) << r.output;

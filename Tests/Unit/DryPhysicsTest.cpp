@@ -8,6 +8,7 @@
 #include <map>
 
 #include "Support/FoldedSheet.h"
+#include "Support/TempFiles.h"
 #include "Support/TestScenes.h"
 
 using namespace soak;
@@ -167,7 +168,7 @@ TEST(Cloth, FoldedSheetFallingOnTheFloorDoesNotPassThroughItself) {
   const char* solvers[][2] = {{"", "model='pbd'"}, {"clothSubsteps='8' clothIterations='12'", "model='chebyshev'"}};
   for (const auto& solver : solvers) {
     const float worst =
-        test::FoldedSheet{}.smallestGapWhenDropped(Device::Cpu, testing::TempDir() + "/folded.obj", solver[0], solver[1]);
+        test::FoldedSheet{}.smallestGapWhenDropped(Device::Cpu, test::processTempPath("folded.obj"), solver[0], solver[1]);
     std::printf("folded sheet (%s %s): smallest upper-minus-lower layer height %.4f m\n", solver[0], solver[1],
                 worst);
     EXPECT_GT(worst, 0.005f) << solver[0] << " " << solver[1];  // half the contact distance (thickness / 2 = 9.4 mm)

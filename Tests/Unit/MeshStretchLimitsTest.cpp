@@ -14,6 +14,7 @@
 #include "Cloth/ClothJacobi.h"
 #include "Cloth/StretchLimits.h"
 #include "Support/JitteredSheet.h"
+#include "Support/TempFiles.h"
 #include "Support/TestScenes.h"
 
 using namespace soak;
@@ -123,7 +124,7 @@ struct MeshSwing {
 // corners and let go: it swings down and hangs. Strain of all its edges
 // every 1/30 s.
 MeshSwing swingJitteredSheet(bool limits, double seconds, const std::vector<std::string>& overrides) {
-  const std::string obj = testing::TempDir() + "/jittered_sheet.obj";
+  const std::string obj = test::processTempPath("jittered_sheet.obj");
   test::writeObjFile(test::jitteredSheet(40, 1.2f, 0.3f, 1.5f, 3), obj);
   test::TestRegistry reg;
   auto sim = test::makeSimulation("<Scene><Cloth mesh='" + obj + "' pin='0 40' stretchLimits='" +

@@ -16,6 +16,7 @@
 #include "Base/Error.h"
 #include "Output/RunFolder.h"
 #include "SoakProcess.h"
+#include "Support/TempFiles.h"
 
 using namespace soak::test;
 
@@ -35,7 +36,7 @@ const char* kClothScene = R"(<Scene>
 )";
 
 std::string clothScene() {
-  const std::string path = ::testing::TempDir() + "runfolder_cloth.xml";
+  const std::string path = processTempPath("runfolder_cloth.xml");
   writeWholeFile(path, kClothScene);
   return path;
 }
