@@ -104,10 +104,13 @@ constexpr float kColliderWeight = 100.f * kStiffest;
 // stretches the sheet out again: on the small fig9b the largest per-frame
 // 99th-percentile strain is 7.4 % without them and 5.4 % with them
 // (Doc/design.md, "Contacts around the solve").
-SOAK_INLINE void addColliderTerms(JacobiSums& s, Vec3 xi, float r, const Collider* colliders, int count) {
+// `before`: the colliders as colliderBefore places them for the sub-step.
+SOAK_INLINE void addColliderTerms(JacobiSums& s, Vec3 xi, float r, const Collider* colliders, int count,
+                                  float before = 0.f) {
   for (int c = 0; c < count; ++c) {
     Vec3 normal;
-    const float gap = colliderDistance(colliders[c], xi, normal) - r;
+    const float gap =
+        colliderDistance(before > 0.f ? colliderBefore(colliders[c], before) : colliders[c], xi, normal) - r;
     if (gap < 0.f) s.add(xi - normal * gap, kColliderWeight);
   }
 }

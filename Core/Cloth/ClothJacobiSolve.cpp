@@ -174,7 +174,7 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, Sub
           sums.weighted = laneSum(l, sums.weighted);
           sums.weight = laneSum(l, sums.weight);
           if (!l.leader()) return;
-          addColliderTerms(sums, xi, yr.w, colliders, colliderCount);
+          addColliderTerms(sums, xi, yr.w, colliders, colliderCount, t.colliderLag());
           const float h = t.h();
           Vec3 xhat = jacobiMinimum(sums, y, 1.f / (h * h) / xv.w);
           // Tethers as hard limits on the Jacobi step's result: their pins
@@ -200,7 +200,7 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, Sub
           // over the sub-step's motion (here rather than a launch of its own).
           if (substepStart)
             q = projectOutOfColliders(colliders, colliderCount, substepStart[slot].xyz(), q, target[v].w, t.h(),
-                                      c.frictionScale ? c.frictionScale[v] : 1.f);
+                                      c.frictionScale ? c.frictionScale[v] : 1.f, t.colliderLag());
           p.predicted[slot] = Float4(q, xv.w);
           return;
         }

@@ -160,7 +160,9 @@ void runSubstep(const Substep& a) {
       const float r = collisionRadiusScale * p.radius[i];
       const float friction = c.frictionScale ? c.frictionScale[v] : 1.f;
       p.predicted[i] = Float4(
-          projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, t.h(), friction), xp.w);
+          projectOutOfColliders(colliders, colliderCount, s.start[i].xyz(), xp.xyz(), r, t.h(), friction,
+                                t.colliderLag()),
+          xp.w);
     }, "cloth.substep.colliders");
   }
   if (oneSubstep) a.contacts->separate(a.substepView);

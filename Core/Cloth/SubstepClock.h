@@ -29,6 +29,9 @@ struct SubstepTime {
   // The fraction of the step done at the end of the sub-step under way.
   SOAK_INLINE float along() const { return float(clock->substep + 1) / float(clock->substeps); }
   SOAK_INLINE bool last() const { return clock->substep + 1 == clock->substeps; }
+  // How long before the step's end the sub-step under way ends: where it
+  // sees a scripted collider (colliderBefore); 0 in the last sub-step.
+  SOAK_INLINE float colliderLag() const { return last() ? 0.f : dt * (1.f - along()); }
   // ClothView's bends take 1 - (1 - k')^e a sub-step, e = fewest / count, so
   // that a step bends alike whatever its count.
   SOAK_INLINE float bendExponent() const { return float(fewest) / float(clock->substeps); }

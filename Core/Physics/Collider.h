@@ -76,6 +76,21 @@ SOAK_INLINE float colliderDistance(const Collider& c, Vec3 p, Vec3& normal) {
   return d.z;
 }
 
+// The collider `before` seconds before where the step put it, moved back
+// along its velocity: a scripted collider is placed at its path's end-of-step
+// point, and a cloth sub-step that ends a fraction `along` into the step sees
+// it at dt (1 - along) before that, so that it moves v h each sub-step, as
+// the friction below assumes, instead of the whole step's motion in the
+// first sub-step (a kick of v dt / h that grows with the sub-steps).
+SOAK_INLINE Collider colliderBefore(const Collider& c, float before) {
+  Collider moved = c;
+  const Vec3 back = c.velocity * before;
+  moved.a = c.a - back;
+  if (c.shape == kColliderBox) moved.b = c.b - back;  // a plane's b is its normal
+  moved.displacement = c.displacement - back;
+  return moved;
+}
+
 // Projects predicted position xp (previous position x) out of the collider
 // with margin r; applies Coulomb-like friction by removing a fraction of the
 // tangential displacement. Returns the corrected position.
@@ -102,9 +117,12 @@ SOAK_INLINE Vec3 projectOutOfCollider(const Collider& c, Vec3 x, Vec3 xp, float 
 }
 
 // Every collider in turn (each sees the previous one's correction).
+// `before` > 0: each collider as colliderBefore places it (cloth sub-steps).
 SOAK_INLINE Vec3 projectOutOfColliders(const Collider* colliders, int count, Vec3 x, Vec3 xp, float r, float dt,
-                                       float frictionScale = 1.f) {
-  for (int c = 0; c < count; ++c) xp = projectOutOfCollider(colliders[c], x, xp, r, dt, frictionScale);
+                                       float frictionScale = 1.f, float before = 0.f) {
+  for (int c = 0; c < count; ++c)
+    xp = projectOutOfCollider(before > 0.f ? colliderBefore(colliders[c], before) : colliders[c], x, xp, r, dt,
+                              frictionScale);
   return xp;
 }
 
