@@ -109,8 +109,7 @@ SOAK_INLINE void addColliderTerms(JacobiSums& s, Vec3 xi, float r, const Collide
                                   float before = 0.f) {
   for (int c = 0; c < count; ++c) {
     Vec3 normal;
-    const float gap =
-        colliderDistance(before > 0.f ? colliderBefore(colliders[c], before) : colliders[c], xi, normal) - r;
+    const float gap = colliderDistance(colliderBefore(colliders[c], before), xi, normal) - r;
     if (gap < 0.f) s.add(xi - normal * gap, kColliderWeight);
   }
 }

@@ -82,7 +82,9 @@ SOAK_INLINE float colliderDistance(const Collider& c, Vec3 p, Vec3& normal) {
 // it at dt (1 - along) before that, so that it moves v h each sub-step, as
 // the friction below assumes, instead of the whole step's motion in the
 // first sub-step (a kick of v dt / h that grows with the sub-steps).
+// before <= 0: the collider as placed.
 SOAK_INLINE Collider colliderBefore(const Collider& c, float before) {
+  if (before <= 0.f) return c;
   Collider moved = c;
   const Vec3 back = c.velocity * before;
   moved.a = c.a - back;
@@ -117,12 +119,11 @@ SOAK_INLINE Vec3 projectOutOfCollider(const Collider& c, Vec3 x, Vec3 xp, float 
 }
 
 // Every collider in turn (each sees the previous one's correction).
-// `before` > 0: each collider as colliderBefore places it (cloth sub-steps).
+// Each collider as colliderBefore places it `before` seconds back (cloth sub-steps; 0: as placed).
 SOAK_INLINE Vec3 projectOutOfColliders(const Collider* colliders, int count, Vec3 x, Vec3 xp, float r, float dt,
                                        float frictionScale = 1.f, float before = 0.f) {
   for (int c = 0; c < count; ++c)
-    xp = projectOutOfCollider(before > 0.f ? colliderBefore(colliders[c], before) : colliders[c], x, xp, r, dt,
-                              frictionScale);
+    xp = projectOutOfCollider(colliderBefore(colliders[c], before), x, xp, r, dt, frictionScale);
   return xp;
 }
 
