@@ -48,6 +48,9 @@ void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, 
     }
     k.substep = 0;
     k.substeps = n;
+    k.contactSubsteps = choice.travel > 0.f && choice.contactsBySpeed
+                            ? contactSubstepsForTravel(*maxTravel, choice.travel, n)
+                            : n;
     k.taken += n;
   }, "cloth.substeps.choose");
 }

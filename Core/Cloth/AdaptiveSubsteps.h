@@ -76,6 +76,22 @@ struct StrainSubsteps {
 void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const ClothEdge* edges, const float* rest,
                         int n, float target, int* flags, int* scan, int* counts);
 
+// Contact passes from the speed (Simulation.clothContactsBySpeed).
+//
+// The travel rule above exists for the contacts: a contact pass is sound
+// while no vertex travels more than `travel` of its thickness between two
+// passes. Sub-steps beyond the travel's count (a scene's fewest, the
+// strain's) are for the solve's convergence, which the contact passes do
+// not help: a sub-step's contact passes cost about as much as its 12
+// Jacobi iterations (Doc/performance.md). So with contacts from the speed a
+// step of n sub-steps runs them in only as many as the travel asks for,
+// spread evenly and always in the last (SubstepTime::contactsIn); between
+// two such sub-steps the contact tests take the vertex's path over all the
+// sub-steps since the last (ClothSubstepScratch::contactStart).
+SOAK_INLINE int contactSubstepsForTravel(float perStep, float travel, int substeps) {
+  return substepsForTravel(perStep, travel, 1, substeps);
+}
+
 struct SubstepClock;
 // How a step's count is chosen: `fewest` (Simulation.clothSubsteps) unless
 // travel > 0 (Simulation.clothSubstepTravel): then from the largest travel
@@ -87,6 +103,7 @@ struct SubstepChoice {
   int most = 1;
   int strainMost = 1;
   int strainEdges = 0;
+  bool contactsBySpeed = false;  // Simulation.clothContactsBySpeed
 };
 // Writes the step's count to the clock (its substep 0, its total taken up),
 // on the device, from *maxTravel and, where not null, strainCounts[0..1]

@@ -16,7 +16,8 @@ namespace soak {
 // (Doc/performance.md).
 constexpr int kContactBlocks = 4;
 
-void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Float4* scratch, int passes) {
+void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Float4* scratch, int passes,
+                          const int* onlyIf) {
   const ClothSlots cloth = clothSlots(n.cloth);
   const ClothView c = n.cloth;
   // Each pass reads the cloth's x* from one buffer and writes them to the
@@ -27,6 +28,7 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Float4* 
     const Float4* in = pass % 2 == 0 ? own : scratch;
     Float4* out = pass % 2 == 0 ? scratch : own;
     forEachClothItemLanes<kContactBlocks>(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+      if (onlyIf && !*onlyIf) return;
       const Float4 xi4 = in[i];
       if (xi4.w == 0.f) {
         if (lanes.leader()) out[i] = xi4;
@@ -65,7 +67,9 @@ void resolveClothContacts(Device d, ParticleView p, ClothContactView n, Float4* 
     }, "cloth.contact");
   }
   if (passes % 2 == 1)
-    forEachClothParticle(d, cloth, SOAK_LAMBDA(int i) { own[i] = scratch[i]; }, "cloth.contact.copy");
+    forEachClothParticle(d, cloth, SOAK_LAMBDA(int i) {
+      if (!onlyIf || *onlyIf) own[i] = scratch[i];
+    }, "cloth.contact.copy");
 }
 
 namespace {
@@ -79,12 +83,13 @@ SOAK_INLINE bool touchesOneRing(const ClothView& c, int v, const ClothTriangle& 
 }
 }  // namespace
 
-void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n) {
+void resolveVertexTriangleContacts(Device d, ParticleView p, ClothContactView n, const int* onlyIf) {
   const ClothView c = n.cloth;
   if (c.triangleCount == 0) return;
-  snapshotTriangles(d, p, c);
+  snapshotTriangles(d, p, c, onlyIf);
   const ClothSlots cloth = clothSlots(c);
   forEachClothItemLanes<kContactBlocks>(d, cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
+    if (onlyIf && !*onlyIf) return;
     const Float4 xi4 = p.predicted[i];
     if (xi4.w == 0.f) return;
     const int vi = p.id[i];

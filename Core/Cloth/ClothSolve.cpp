@@ -127,7 +127,11 @@ void runSubstep(const Substep& a) {
   forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
     const int i = c.vertexSlot[v];
     const float h = t.h();
-    if (t.index() > 0) endSubstep(p, s, i, h);  // the sub-step before this one ends here
+    if (v == 0) t.clock->contactsDue = t.contactsIn(t.index()) ? 1 : 0;  // read by later kernels only
+    if (t.index() > 0) {
+      endSubstep(p, s, i, h);  // the sub-step before this one ends here
+      if (t.contactsIn(t.index() - 1)) s.contactStart[i] = s.start[i];
+    }
     const Float4 x = p.position[i];
     if (x.w == 0.f) {
       const int k = c.attachCollider[v];
@@ -185,8 +189,9 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     forEach(d, p.count, SOAK_LAMBDA(int i) {
       s.velocityFix[i] = Vec3(0.f, 0.f, 0.f);
       s.start[i] = p.position[i];
+      s.contactStart[i] = p.position[i];
     }, "cloth.substep.clear");
-    substepView.position = s.start;
+    substepView.position = s.contactStart;
     // The step's free motion x* - x holds gravity over dt; take it out again
     // so that each sub-step adds its own h of it.
     forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {

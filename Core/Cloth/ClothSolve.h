@@ -28,7 +28,9 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, Sub
                       const Float4* substepStart);
 
 // The cloth contact passes of a (sub-)step, each run with a view whose
-// `position` is the sub-step's start (the x0 of the contact tests).
+// `position` is the sub-step's start or, where the passes skip sub-steps
+// (SubstepTime::contactsIn), the end of the last sub-step that ran them:
+// the x0 of the contact tests. They run where the clock's contactsDue is 1.
 struct ClothContactPasses {
   std::function<void(ParticleView)> separate;  // particle contact: layers pushed apart to their thickness
   std::function<void(ParticleView)> uncross;   // vertex-triangle contact: no vertex crosses a triangle
@@ -39,6 +41,7 @@ struct ClothSubstepScratch {
   Float4* start = nullptr;      // position (and inverse mass) at the start of the sub-step
   Vec3* velocity = nullptr;     // velocity through the sub-steps
   Vec3* velocityFix = nullptr;  // out: end velocity minus (x* - x) / dt; 0 for non-cloth particles
+  Float4* contactStart = nullptr;  // the place at the end of the last sub-step that ran the contact passes
 };
 
 // The cloth part of one step in the clock's sub-steps of h = dt / count

@@ -10,7 +10,7 @@
 namespace soak {
 
 ClothStep::ClothStep(Device d)
-    : device_(d), contactScratch_(d), contactLists_(d), crossingFlag_(d), substepStart_(d), substepVelocity_(d),
+    : device_(d), contactScratch_(d), contactLists_(d), crossingFlag_(d), substepStart_(d), contactStart_(d), substepVelocity_(d),
       velocityFix_(d), clock_(d), vertexTravel_(d), maxTravel_(d), strainFlags_(d), strainScan_(d), strainCounts_(d) {
   clock_.upload({SubstepClock{}});
 }
@@ -58,8 +58,10 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   choice.fewest = s.substeps;
   choice.travel = bySpeed ? s.substepTravel : 0.f;
   choice.most = s.maxSubsteps;
-  choice.strainMost = std::min(s.maxSubsteps, kStrainSubstepsFactor * s.substeps);
+  choice.strainMost =
+      std::min(s.maxSubsteps, s.strainMaxSubsteps > 0 ? s.strainMaxSubsteps : kStrainSubstepsFactor * s.substeps);
   choice.strainEdges = cloth.strainEdges().count;
+  choice.contactsBySpeed = s.contactsBySpeed;
   chooseClothSubsteps(device_, clock_.data(), maxTravel_.data(), bySpeed && strainQueued_ ? strainCounts_.data() : nullptr,
                       choice);
   travelQueued_ = strainQueued_ = false;
@@ -70,22 +72,24 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   if (bySpeed && s.substeps < 2) known = readClock().substeps;
   const bool oneSubstep = known == 1;
   ClothContactPasses contacts;
+  const int* due = &clock_.data()->contactsDue;  // SubstepTime::contactsIn, written by each sub-step
   contacts.separate = [&](ParticleView view) {
-    resolveClothContacts(device_, view, contactLists_.view(), contactScratch_.data(), s.contactPasses);
+    resolveClothContacts(device_, view, contactLists_.view(), contactScratch_.data(), s.contactPasses, due);
   };
   contacts.uncross = [&](ParticleView view) {
-    resolveVertexTriangleContacts(device_, view, contactLists_.view());
-    revertNewCrossings(device_, view, contactLists_.view(), crossingFlag_.data(), s.crossingGuardRounds);
+    resolveVertexTriangleContacts(device_, view, contactLists_.view(), due);
+    revertNewCrossings(device_, view, contactLists_.view(), crossingFlag_.data(), s.crossingGuardRounds, due);
   };
   substepped_ = !oneSubstep;  // one sub-step ends with the velocity (x* - x) / dt: nothing to fix
   if (substepped_) {
     substepStart_.resize(p.count);
+    contactStart_.resize(p.count);
     substepVelocity_.resize(p.count);
     velocityFix_.resize(p.count);
   }
   substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity,
                SubstepTime{clock_.data(), s.dt, s.substeps}, known, s.iterations,
-               s.spectralRadius, {substepStart_.data(), substepVelocity_.data(), velocityFix_.data()}, contacts);
+               s.spectralRadius, {substepStart_.data(), substepVelocity_.data(), velocityFix_.data(), contactStart_.data()}, contacts);
 }
 
 }  // namespace soak

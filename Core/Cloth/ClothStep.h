@@ -20,6 +20,8 @@ struct ClothStepSettings {
   int substeps = 1;          // Simulation.clothSubsteps (the fewest, with substepTravel)
   float substepTravel = 0.f; // Simulation.clothSubstepTravel: > 0, sub-steps from the speed (AdaptiveSubsteps.h)
   int maxSubsteps = 1;       // Simulation.clothMaxSubsteps
+  bool contactsBySpeed = false;  // Simulation.clothContactsBySpeed
+  int strainMaxSubsteps = 0; // Simulation.clothStrainMaxSubsteps: the strain's most; 0: kStrainSubstepsFactor x substeps
   float strainTarget = 0.f;  // Simulation.clothStrainTarget: > 0 (with substepTravel), sub-steps from the strain (AdaptiveSubsteps.h)
   int iterations = 1;        // Simulation.clothIterations: constraint rounds per (sub-)step
   float spectralRadius = 0;  // Simulation.clothSpectralRadius (chebyshev)
@@ -55,6 +57,11 @@ class ClothStep {
   // (ClothSystem::constraintPhasesPerStep). Each reads the clock: a host
   // wait on the GPU.
   int lastSubsteps() const { return readClock().substeps; }
+  // Of those, the sub-steps that ran the contact passes (SubstepTime::contactsIn).
+  int lastContactSubsteps() const {
+    const SubstepClock k = readClock();
+    return k.contactSubsteps > 0 && k.contactSubsteps < k.substeps ? k.contactSubsteps : k.substeps;
+  }
   long long phasesTaken() const { return readClock().taken * phasesPerSubstep_; }
   // The latest run's sub-step count in device memory, for a copy that does
   // not wait (FrameCopy.h).
@@ -70,7 +77,7 @@ class ClothStep {
   Buffer<Float4> contactScratch_;  // the particle contact passes' second buffer of x*
   ClothContactLists contactLists_;
   Buffer<int> crossingFlag_;  // the crossing guard's flags (CrossingGuard.h), 0 between sub-steps
-  Buffer<Float4> substepStart_;
+  Buffer<Float4> substepStart_, contactStart_;
   Buffer<Vec3> substepVelocity_, velocityFix_;
   Buffer<SubstepClock> clock_;  // one
   Buffer<float> vertexTravel_;  // per vertex, AdaptiveSubsteps.h

@@ -10,7 +10,7 @@ namespace {
 constexpr int kEdgesAtOnce = 4;  // a vertex's own edges tested in one walk of its candidates
 }  // namespace
 
-void revertNewCrossings(Device d, ParticleView p, ClothContactView n, int* flag, int rounds) {
+void revertNewCrossings(Device d, ParticleView p, ClothContactView n, int* flag, int rounds, const int* onlyIf) {
   const ClothView c = n.cloth;
   if (c.triangleCount == 0 || rounds <= 0) return;
   const ClothSlots cloth = clothSlots(c);
@@ -23,7 +23,7 @@ void revertNewCrossings(Device d, ParticleView p, ClothContactView n, int* flag,
   // edges), with room for 10 % stretch.
   const float near = 2.7f * c.maxEdgeLength;
   for (int round = 0; round < rounds; ++round) {
-    const int* const go = round > 0 ? found + round - 1 : nullptr;
+    const int* const go = round > 0 ? found + round - 1 : onlyIf;  // round 0: where the contacts run
     int* const foundNow = found + round;
     // The triangles as they are now (and at the sub-step's start): the
     // test below reads one place per triangle and rejects most on their

@@ -38,7 +38,8 @@ SOAK_INLINE bool segmentCrossesTriangle(Vec3 p0, Vec3 p1, Vec3 a, Vec3 b, Vec3 c
 
 // `rounds` rounds over the view's x* (`position`: the sub-step's start).
 // `flag`: p.count + rounds ints, all 0 (left 0): one per particle slot, then
-// one per round.
-void revertNewCrossings(Device d, ParticleView p, ClothContactView n, int* flag, int rounds);
+// one per round. onlyIf (device memory): no round unless *onlyIf is 1.
+void revertNewCrossings(Device d, ParticleView p, ClothContactView n, int* flag, int rounds,
+                        const int* onlyIf = nullptr);
 
 }  // namespace soak

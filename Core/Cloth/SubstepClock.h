@@ -13,6 +13,8 @@ struct SubstepClock {
   int substep = 0;         // the sub-step under way, from 0
   int substeps = 0;        // the step's count (0 before the first step)
   long long taken = 0;     // sub-steps of all steps so far
+  int contactSubsteps = 0; // of the step's sub-steps, how many run the contact passes (contactsIn)
+  int contactsDue = 1;     // 1 while the sub-step under way runs them: the contact kernels' onlyIf
   StrainSubsteps strain;   // what the strain asks for (AdaptiveSubsteps.h): state a checkpoint keeps
 };
 
@@ -35,6 +37,15 @@ struct SubstepTime {
   // ClothView's bends take 1 - (1 - k')^e a sub-step, e = fewest / count, so
   // that a step bends alike whatever its count.
   SOAK_INLINE float bendExponent() const { return float(fewest) / float(clock->substeps); }
+  // Whether sub-step k runs the cloth's contact passes: contactSubsteps of
+  // the count, spread evenly, the last always; every one where
+  // contactSubsteps is 0 or not below the count (AdaptiveSubsteps.h,
+  // contactSubstepsForTravel).
+  SOAK_INLINE bool contactsIn(int k) const {
+    const int c = clock->contactSubsteps, n = clock->substeps;
+    if (c <= 0 || c >= n) return true;
+    return (k + 1) * c / n > k * c / n;
+  }
 };
 
 }  // namespace soak

@@ -286,11 +286,22 @@ void registerCoreElements(ModuleRegistry& r) {
               "With clothSubstepTravel > 0: the 99th percentile of edge strain the cloth's sub-steps are raised "
               "to keep under. Each step counts the edges the step before left past it and past a quarter of it: "
               "over 1 % past it raises the sub-steps by half for the steps after; 60 steps in a row with under "
-              "1 % past the quarter lower them by one (Doc/model.md, \"The default cloth solver\"); at most 4 "
-              "times clothSubsteps. 0: sub-steps from the speed "
+              "1 % past the quarter lower them by one (Doc/model.md, \"The default cloth solver\"), up to "
+              "clothStrainMaxSubsteps. 0: sub-steps from the speed "
               "alone. < 0: the solver's own (0.02 where clothSubsteps is left to the solver and no cloth is pbd, "
               "else 0).",
               -1.0, 1.0)
+        .boolean("clothContactsBySpeed", &S::clothContactsBySpeed,
+                 "With clothSubstepTravel > 0: the cloth's contact passes (particle and vertex-triangle contact) "
+                 "run in as many of a step's sub-steps as its speed asks for (one a step for slow cloth), spread "
+                 "evenly, the last always, each testing the path since the one before; the sub-steps that "
+                 "clothSubsteps or clothStrainTarget add beyond those serve the solve's convergence alone "
+                 "(Doc/model.md, \"Cloth sub-steps\"). false: contact passes in every sub-step.")
+        .integer("clothStrainMaxSubsteps", &S::clothStrainMaxSubsteps,
+                 "The most cloth sub-steps clothStrainTarget raises a step to, within clothMaxSubsteps. 0: 4 times "
+                 "clothSubsteps (16 for the solver's own 4): sub-steps from the strain cost their contact passes "
+                 "as well as their iterations (Doc/model.md, \"The default cloth solver\").",
+                 0, 100)
         .real("clothSpectralRadius", &S::clothSpectralRadius, "",
               "Cloth.model=chebyshev: the spectral radius rho its Chebyshev weights assume (Wang 2015); "
               "nearer 1 converges further per iteration, but from 0.8 a hanging sheet never comes to rest "

@@ -112,6 +112,7 @@ class Simulation final : public CheckpointState, public FrameSource {
   // vary; Cloth/AdaptiveSubsteps.h). Each reads the count from the device:
   // a host wait on the GPU.
   int lastClothSubsteps() const { return stages_.cloth.lastSubsteps(); }
+  int lastClothContactSubsteps() const { return stages_.cloth.lastContactSubsteps(); }
   // The latest step's cloth sub-steps in device memory (FrameCopy.h).
   const int* clothSubstepCount() const { return stages_.cloth.substepCount(); }
   long long clothPhasesTaken() const { return stages_.cloth.phasesTaken(); }

@@ -7,6 +7,8 @@
 //              [--scale-sheet paper|dense]   (the scale scenes' sheet: see scaleCase)
 //              [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]
 //              [--set Element.attr=value ...]   (applied to every case, e.g. to compare solver variants)
+//              [--write-scale-scenes DIR]   (write the --scale scenes as DIR/scale_<n>.xml for
+//                                            `soak run`, e.g. whole runs for their strain, and stop)
 //
 // Each case: the scene is built, advanced by its warm-up (simulated seconds
 // for Table 2 scenes, so the jet has emitted its water; steps for the scale
@@ -225,14 +227,14 @@ int usage() {
                "usage: soak-bench [--device cpu|cuda] [--scenes DIR] [--only NAME,...] [--scale 100k,1M,...]\n"
                "                  [--scale-sheet paper|dense]\n"
                "                  [--steps N] [--warmup-steps N] [--json FILE] [--no-table2]\n"
-               "                  [--set Element.attr=value ...]\n");
+               "                  [--set Element.attr=value ...] [--write-scale-scenes DIR]\n");
   return 2;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string deviceName = "auto", scenes = "Scenes", json, only, scale;
+  std::string deviceName = "auto", scenes = "Scenes", json, only, scale, writeScenes;
   ScaleSheet sheet = ScaleSheet::Paper;
   int steps = 50, warmupSteps = 20;
   bool table2 = true;
@@ -258,12 +260,33 @@ int main(int argc, char** argv) {
       else if (a == "--json") json = next();
       else if (a == "--no-table2") table2 = false;
       else if (a == "--set") overrides.push_back(next());
+      else if (a == "--write-scale-scenes") writeScenes = next();
       else if (a == "--help" || a == "-h") return usage(), 0;
       else return std::fprintf(stderr, "soak-bench: unknown argument '%s'\n", a.c_str()), usage();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "%s\n", e.what());
       return 2;
     }
+  }
+  if (!writeScenes.empty()) {
+    // The scale scenes as files: soak-bench times steps, a whole run's
+    // per-frame strain needs `soak run`.
+    try {
+      for (const std::string& s : splitList(scale)) {
+        const Case c = scaleCase(parseCount(s), warmupSteps, sheet);
+        std::string file = c.name;
+        std::replace(file.begin(), file.end(), ' ', '_');
+        const std::string path = writeScenes + "/" + file + ".xml";
+        std::ofstream out(path);
+        out << c.text;
+        if (!(out.flush())) throw InputError("soak-bench: cannot write " + path);
+        std::printf("%s\n", path.c_str());
+      }
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 2;
+    }
+    return 0;
   }
   try {
     const Device device = resolveDevice(deviceName);

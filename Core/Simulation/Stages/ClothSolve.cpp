@@ -11,7 +11,7 @@ void runClothSolve(CoreStageState& state, Simulation& sim) {
   const SimulationSettings& set = sim.settings;
   state.cloth.run(sim.particles.view(), sim.cloth, sim.deviceColliders(), int(sim.colliders.size()),
                   {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothSubstepTravel, set.clothMaxSubsteps,
-                   set.clothStrainTarget,
+                   set.clothContactsBySpeed, set.clothStrainMaxSubsteps, set.clothStrainTarget,
                    set.clothIterations, set.clothSpectralRadius,
                    set.contactPasses, set.crossingGuardRounds, kCollisionRadiusScale, sim.sizeListsNow()});
 }
