@@ -6,9 +6,9 @@
 // thickness, and the vertex-triangle test takes the side a vertex is on at
 // the sub-step's start as its own (Eq. 21). A vertex that travels more than
 // its thickness in one sub-step can pass a layer between two tests, and a
-// sheet that has passed through itself stays tangled (Doc/design.md, "The
-// sheet tangles"). Short sub-steps keep the travel small, but a sub-step
-// costs its contact passes whatever the cloth does, and most of a run the
+// sheet that has passed through itself stays tangled (Doc/design.md,
+// "Tangles and the crossing guard"). Short sub-steps keep the travel small, but a sub-step
+// costs its iterations whatever the cloth does, and most of a run the
 // cloth is slow. So each step takes the fewest sub-steps that keep every
 // cloth vertex within `travel` of its thickness per sub-step, estimated
 // from its velocity after the predict stage (the step's start plus what

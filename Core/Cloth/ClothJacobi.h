@@ -103,7 +103,7 @@ constexpr float kColliderWeight = 100.f * kStiffest;
 // pulls a draped sheet into the collider and the projection after it
 // stretches the sheet out again: on the small fig9b the largest per-frame
 // 99th-percentile strain is 7.4 % without them and 5.4 % with them
-// (Doc/design.md, "Contacts around the solve").
+// (Doc/design.md, "A step's cloth stage").
 // `before`: the colliders as colliderBefore places them for the sub-step.
 SOAK_INLINE void addColliderTerms(JacobiSums& s, Vec3 xi, float r, const Collider* colliders, int count,
                                   float before = 0.f) {

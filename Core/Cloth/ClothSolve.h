@@ -52,7 +52,7 @@ struct ClothSubstepScratch {
 // colliders and keeps vertices from crossing triangles (contacts.uncross).
 // Separating before the solve leaves the solve's result, not a contact
 // push, as the sub-step's shape, and the crossing test stays the last word
-// (Doc/design.md, "Contacts around the solve"). With one sub-step (the
+// (Doc/design.md, "A step's cloth stage"). With one sub-step (the
 // paper's PBD scenes) the free vertices start from the predict stage's x*,
 // both contact passes follow the constraints and every particle is
 // projected out of the colliders, as the paper's single pass does. The

@@ -11,8 +11,8 @@
 // bring no vertex near a triangle or another vertex, so neither sees them
 // (fig9's four corners meeting under the ball at 6-9 m/s relative), and a
 // sheet that has passed through itself stays tangled: every test then
-// holds it on its wrong side (Doc/design.md, "Where fig9's worst strain
-// comes from", "The crossing guard"). Put back at the start of the sub-step, the five vertices
+// holds it on its wrong side (Doc/design.md, "Tangles and the crossing
+// guard"). Put back at the start of the sub-step, the five vertices
 // are where they were not crossed; they lose that sub-step's motion, as an
 // inelastic impact would (the simplest of the fail-safes of Bridson,
 // Fedkiw and Anderson 2002, who stop the vertices of an impact zone

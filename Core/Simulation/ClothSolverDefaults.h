@@ -9,7 +9,8 @@
 //   moves fast (travel kChebyshevTravel of its thickness per sub-step). On the
 //   README's example (2 s, CPU) this leaves 0.09 % mean / 1.4 % p99 edge
 //   strain in its worst frame where the paper's PBD at 1 x 8 leaves 0.74 % /
-//   12.7 %, at 1.4-2 times its CPU step (2 threads to 1); 2 x 25, as many phases, leaves 2.9 % p99
+//   12.7 %, at 1.4 times its CPU step on one thread (the contact passes in as
+//   many sub-steps as the cloth's travel asks for); 2 x 25, as many phases, leaves 2.9 % p99
 //   at 1.6 times (Doc/performance.md, "Default cloth solver").
 //   With the sub-steps left to the solver, it also raises them while the
 //   strain its solve leaves passes kChebyshevStrainTarget at the 99th

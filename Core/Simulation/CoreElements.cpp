@@ -276,7 +276,7 @@ void registerCoreElements(ModuleRegistry& r) {
               "> 0: each step takes as many cloth sub-steps as keep every cloth vertex within this fraction "
               "of its thickness (Cloth.thickness) of travel per sub-step, from clothSubsteps up to "
               "clothMaxSubsteps, each of clothIterations, so that contacts see fast cloth in short sub-steps "
-              "and slow cloth costs few (Doc/design.md, \"Sub-steps from the cloth's speed\"). Needs chebyshev or xpbd cloths: pbd's "
+              "and slow cloth costs few (Doc/design.md, \"How many sub-steps, and which run the contacts\"). Needs chebyshev or xpbd cloths: pbd's "
               "stiffness is per iteration. 0: always clothSubsteps. < 0: the solver's own (0.5 without pbd "
               "cloth, 0 with it).",
               -1.0, 100.0)
@@ -315,7 +315,7 @@ void registerCoreElements(ModuleRegistry& r) {
                  "Rounds per cloth sub-step of the crossing guard: an edge that ends the sub-step through a "
                  "triangle it was not through at its start puts its vertices and the triangle's back where the "
                  "sub-step started them, so a sheet never passes through itself or another (Doc/design.md, "
-                 "\"The crossing guard\": 3 rounds take fig9b's worst p99 strain from 15-16 % to 10.6 % and add "
+                 "\"Tangles and the crossing guard\"; Doc/performance.md, \"The crossing guard's cost (H100)\": 3 rounds take fig9b's worst p99 strain from 15-16 % to 10.6 % and add "
                  "about 1.6 ms a step on the H100; 1 or 2 rounds stretch the sheet more than none). 0: no guard.",
                  0, 100)
         .vector("domainMin", &S::domainMin, "m", "Water below this corner is removed (drained).")
