@@ -10,8 +10,9 @@
 namespace soak {
 
 ClothStep::ClothStep(Device d)
-    : device_(d), contactScratch_(d), contactLists_(d), crossingFlag_(d), substepStart_(d), contactStart_(d), substepVelocity_(d),
-      velocityFix_(d), clock_(d), vertexTravel_(d), maxTravel_(d), strainFlags_(d), strainScan_(d), strainCounts_(d) {
+    : device_(d), contactScratch_(d), contactLists_(d), crossingFlag_(d), substepStart_(d), contactStart_(d),
+      substepVelocity_(d), velocityFix_(d), clock_(d), vertexTravel_(d), maxTravel_(d), strainFlags_(d),
+      strainScan_(d), strainCounts_(d) {
   clock_.upload({SubstepClock{}});
 }
 
@@ -89,7 +90,8 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   }
   substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity,
                SubstepTime{clock_.data(), s.dt, s.substeps}, known, s.iterations,
-               s.spectralRadius, {substepStart_.data(), substepVelocity_.data(), velocityFix_.data(), contactStart_.data()}, contacts);
+               s.spectralRadius,
+               {substepStart_.data(), substepVelocity_.data(), velocityFix_.data(), contactStart_.data()}, contacts);
 }
 
 }  // namespace soak

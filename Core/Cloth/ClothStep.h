@@ -57,11 +57,9 @@ class ClothStep {
   // (ClothSystem::constraintPhasesPerStep). Each reads the clock: a host
   // wait on the GPU.
   int lastSubsteps() const { return readClock().substeps; }
-  // Of those, the sub-steps that ran the contact passes (SubstepTime::contactsIn).
-  int lastContactSubsteps() const {
-    const SubstepClock k = readClock();
-    return k.contactSubsteps > 0 && k.contactSubsteps < k.substeps ? k.contactSubsteps : k.substeps;
-  }
+  // Of those, the sub-steps that ran the contact passes (SubstepTime::contactsIn;
+  // chooseClothSubsteps keeps it within [1, substeps]).
+  int lastContactSubsteps() const { return readClock().contactSubsteps; }
   long long phasesTaken() const { return readClock().taken * phasesPerSubstep_; }
   // The latest run's sub-step count in device memory, for a copy that does
   // not wait (FrameCopy.h).
