@@ -16,15 +16,16 @@ void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* 
 }
 
 void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const ClothEdge* edges, const float* rest,
-                        int n, float target, int* flags, int* scan, int* counts) {
+                        int n, float target, int fewest, const SubstepClock* clock, int* flags, int* scan,
+                        int* counts) {
   if (n == 0) return;
-  const float quarter = 0.25f * target;
   forEach(d, n, SOAK_LAMBDA(int e) {
+    const float calm = strainCalmBound(clock->strain, target, fewest);
     const Vec3 a = p.position[vertexSlot[edges[e].a]].xyz();
     const Vec3 b = p.position[vertexSlot[edges[e].b]].xyz();
     const float strain = fabsf(length(a - b) - rest[e]) / rest[e];
     flags[e] = strain > target;
-    flags[n + e] = strain > quarter;
+    flags[n + e] = strain > calm;
   }, "cloth.substeps.strain");
   exclusiveScanAsync(d, flags, scan, 2 * n);
   forEach(d, 1, SOAK_LAMBDA(int) {
@@ -48,6 +49,7 @@ void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, 
     }
     k.substep = 0;
     k.substeps = n;
+    k.strain.leftBy = n;
     k.contactSubsteps = choice.travel > 0.f && choice.contactsBySpeed
                             ? contactSubstepsForTravel(*maxTravel, choice.travel, n)
                             : n;

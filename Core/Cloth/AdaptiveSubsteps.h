@@ -48,18 +48,24 @@ SOAK_INLINE int substepsForTravel(float perStep, float travel, int fewest, int m
 // the sub-step (Tests/Unit/ClothSubstepTest.cpp), and how much depends on
 // the cloth: a sheet hung from one diagonal needs about half again the
 // sub-steps of one hung from an edge for the same strain. So each step also
-// counts, at its start, the edges the step before left past the target ε
-// and past ε / 4, over the edges the stats count (a sheet's warp and weft,
-// a mesh's every edge). More than 1 % past ε (the 99th percentile over it)
-// raises the sub-steps asked for by half at once. Only kStrainCalmSteps
-// steps in a row with under 1 % past ε / 4 lower them, by one: the strain a
-// cloth settles at depends on its sub-steps, so a count lowered as soon as
-// the strain allows swings back and forth, and each change shakes the cloth
-// (measured: lowered at once, a hanging sheet cycles between 4 and 9
-// sub-steps every 7 steps and never comes to rest). Counts are integers, so
-// the choice is the same on every backend and run; it is state, saved in
-// checkpoints.
-constexpr int kStrainCalmSteps = 60;
+// counts, at its start, the edges the step before left past the target ε,
+// over the edges the stats count (a sheet's warp and weft, a mesh's every
+// edge). More than 1 % past ε (the 99th percentile over it) raises the
+// sub-steps asked for by half at once.
+//
+// Lowering follows the same h^2 law: strain left at m sub-steps would be
+// (m / k)^2 times as large at k. Each step also counts the edges whose
+// strain, so predicted at the count the rule would lower to (a quarter
+// fewer, strainLoweredSubsteps), passes kStrainLoweringMargin ε. After
+// kStrainCalmSteps steps in a row with under 1 % of them, the count is
+// lowered. The margin keeps the lowered count's strain under the raising
+// threshold, so the count does not swing back: a count that changes
+// moves the shape the solve settles at, and a cloth whose count swings
+// never comes to rest. The calm spell lets the strain settle at a new
+// count before it is judged. Counts are integers, so the choice is the
+// same on every backend and run; it is state, saved in checkpoints.
+constexpr int kStrainCalmSteps = 10;
+constexpr float kStrainLoweringMargin = 0.8f;
 // The most sub-steps the strain asks for, in multiples of the fewest: a
 // sheet draped over a ball keeps 3 % past it at 32 sub-steps, and a step's
 // cost grows with its sub-steps.
@@ -67,14 +73,33 @@ constexpr int kStrainSubstepsFactor = 4;
 
 struct StrainSubsteps {
   int substeps = 0;  // the sub-steps the strain asks for (0 before the first step)
-  int calmSteps = 0; // steps in a row with the 99th percentile under target / 4
+  int calmSteps = 0; // steps in a row calm enough to lower them
+  int leftBy = 0;    // the sub-steps of the step whose strain the next measurement sees (0 before the first step)
 };
 
+// The count the strain lowers to from `substeps`: a quarter fewer, one at
+// least, not under the fewest.
+SOAK_INLINE int strainLoweredSubsteps(int substeps, int fewest) {
+  const int drop = substeps / 4 > 1 ? substeps / 4 : 1;
+  return substeps - drop > fewest ? substeps - drop : fewest;
+}
+
+// The strain an edge left by `s.leftBy` sub-steps may have for the count to
+// be lowered from s.substeps: kStrainLoweringMargin ε scaled by the h^2 law
+// to the lowered count. 0 before the first step (nothing is calm).
+SOAK_INLINE float strainCalmBound(StrainSubsteps s, float target, int fewest) {
+  if (s.leftBy <= 0 || s.substeps <= 0) return 0.f;
+  const float r = float(strainLoweredSubsteps(s.substeps, fewest)) / float(s.leftBy);
+  return kStrainLoweringMargin * target * r * r;
+}
+
+struct SubstepClock;
 // Writes to counts[0] the edges whose strain |l - l0| / l0 exceeds `target`
-// and to counts[1] those exceeding target / 4 (device memory), without a
-// wait. `flags` and `scan` hold 2 n ints.
+// and to counts[1] those exceeding strainCalmBound of the clock's strain
+// state (device memory), without a wait. `flags` and `scan` hold 2 n ints.
 void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const ClothEdge* edges, const float* rest,
-                        int n, float target, int* flags, int* scan, int* counts);
+                        int n, float target, int fewest, const SubstepClock* clock, int* flags, int* scan,
+                        int* counts);
 
 // Contact passes from the speed (Simulation.clothContactsBySpeed).
 //
@@ -92,7 +117,6 @@ SOAK_INLINE int contactSubstepsForTravel(float perStep, float travel, int subste
   return substepsForTravel(perStep, travel, 1, substeps);
 }
 
-struct SubstepClock;
 // How a step's count is chosen: `fewest` (Simulation.clothSubsteps) unless
 // travel > 0 (Simulation.clothSubstepTravel): then from the largest travel
 // up to `most`, and from the strain counts (where measured) up to
@@ -112,8 +136,9 @@ struct SubstepChoice {
 void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, const int* strainCounts,
                          SubstepChoice choice);
 
-// What the strain asks for next, from what it asked before and the counts.
-SOAK_INLINE StrainSubsteps substepsForStrain(StrainSubsteps current, int above, int aboveQuarter, int edges, int fewest,
+// What the strain asks for next, from what it asked before and the counts:
+// `above` edges past the target, `aboveCalm` past strainCalmBound.
+SOAK_INLINE StrainSubsteps substepsForStrain(StrainSubsteps current, int above, int aboveCalm, int edges, int fewest,
                                              int most) {
   const int top = fewest > most ? fewest : most;
   StrainSubsteps next = current;
@@ -123,9 +148,9 @@ SOAK_INLINE StrainSubsteps substepsForStrain(StrainSubsteps current, int above, 
     const int raise = next.substeps / 2 > 1 ? next.substeps / 2 : 1;
     next.substeps = next.substeps + raise < top ? next.substeps + raise : top;
     next.calmSteps = 0;
-  } else if (aboveQuarter < onePercent) {
+  } else if (aboveCalm < onePercent && next.substeps > fewest) {
     if (++next.calmSteps >= kStrainCalmSteps) {
-      next.substeps = next.substeps - 1 > fewest ? next.substeps - 1 : fewest;
+      next.substeps = strainLoweredSubsteps(next.substeps, fewest);
       next.calmSteps = 0;
     }
   } else {

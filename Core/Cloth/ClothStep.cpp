@@ -26,7 +26,7 @@ void ClothStep::setStrainSubsteps(StrainSubsteps s) {
   clock_.upload({k});
 }
 
-void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget) {
+void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget, int fewest) {
   const ClothView c = cloth.view();
   vertexTravel_.resize(std::size_t(c.vertexCount));
   maxTravel_.resize(1);
@@ -38,8 +38,8 @@ void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt, floa
   strainFlags_.resize(2 * std::size_t(edges.count));
   strainScan_.resize(2 * std::size_t(edges.count));
   strainCounts_.resize(2);
-  measureClothStrain(device_, p, c.vertexSlot, edges.edges, edges.rest, edges.count, strainTarget,
-                     strainFlags_.data(), strainScan_.data(), strainCounts_.data());
+  measureClothStrain(device_, p, c.vertexSlot, edges.edges, edges.rest, edges.count, strainTarget, fewest,
+                     clock_.data(), strainFlags_.data(), strainScan_.data(), strainCounts_.data());
 }
 
 void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
@@ -54,7 +54,7 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
   // The sub-steps, chosen on the device (AdaptiveSubsteps.h).
   const bool bySpeed = s.substepTravel > 0.f;
-  if (bySpeed && !travelQueued_) measureTravel(p, cloth, s.dt, s.strainTarget);  // a predict stage that did not
+  if (bySpeed && !travelQueued_) measureTravel(p, cloth, s.dt, s.strainTarget, s.substeps);  // a predict stage that did not
   SubstepChoice choice;
   choice.fewest = s.substeps;
   choice.travel = bySpeed ? s.substepTravel : 0.f;

@@ -40,8 +40,8 @@ class ClothStep {
   // the predict stage left, on the device, for run() to choose the step's
   // sub-steps from. The predict stage calls it.
   // With Simulation.clothStrainTarget as well, the strain the step before
-  // left (AdaptiveSubsteps.h).
-  void measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget);
+  // left (AdaptiveSubsteps.h); `fewest` is Simulation.clothSubsteps.
+  void measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget, int fewest);
   // Chooses the step's sub-steps on the device (SubstepClock.h) and runs
   // them. The host reads the count only where it may be 1 (sub-steps from
   // the speed with Simulation.clothSubsteps 1: one sub-step is the paper's

@@ -284,10 +284,11 @@ void registerCoreElements(ModuleRegistry& r) {
                  "The most cloth sub-steps a step takes with clothSubstepTravel > 0.", 1, 100)
         .real("clothStrainTarget", &S::clothStrainTarget, "",
               "With clothSubstepTravel > 0: the 99th percentile of edge strain the cloth's sub-steps are raised "
-              "to keep under. Each step counts the edges the step before left past it and past a quarter of it: "
-              "over 1 % past it raises the sub-steps by half for the steps after; 60 steps in a row with under "
-              "1 % past the quarter lower them by one (Doc/model.md, \"The default cloth solver\"), up to "
-              "clothStrainMaxSubsteps. 0: sub-steps from the speed "
+              "to keep under, up to clothStrainMaxSubsteps. Each step counts the edges the step before left past "
+              "it: over 1 % raises the sub-steps by half for the steps after. Strain grows with the square of "
+              "the sub-step, so 10 steps in a row with under 1 % of edges whose strain so scaled to a quarter "
+              "fewer sub-steps passes 0.8 of the target lower them by that quarter (Doc/model.md, \"The default "
+              "cloth solver\"). 0: sub-steps from the speed "
               "alone. < 0: the solver's own (0.02 where clothSubsteps is left to the solver and no cloth is pbd, "
               "else 0).",
               -1.0, 1.0)

@@ -57,6 +57,7 @@ void Simulation::saveState(StateWriter& out) const {
   putListSizing(out, fluid.neighbourListSizing());
   out.put<std::int32_t>(stages_.cloth.strainSubsteps().substeps);  // Cloth/AdaptiveSubsteps.h
   out.put<std::int32_t>(stages_.cloth.strainSubsteps().calmSteps);
+  out.put<std::int32_t>(stages_.cloth.strainSubsteps().leftBy);
   out.put<std::int32_t>(static_cast<std::int32_t>(modules_.size()));
   for (const auto& m : modules_) {
     const Module& module = *m;
@@ -82,10 +83,12 @@ void Simulation::loadState(StateReader& in) {
   StrainSubsteps strainSubsteps;
   strainSubsteps.substeps = in.get<std::int32_t>();
   strainSubsteps.calmSteps = in.get<std::int32_t>();
+  strainSubsteps.leftBy = in.get<std::int32_t>();
   if (strainSubsteps.substeps < 0 || strainSubsteps.substeps > 100 || strainSubsteps.calmSteps < 0 ||
-      strainSubsteps.calmSteps > kStrainCalmSteps)
+      strainSubsteps.calmSteps > kStrainCalmSteps || strainSubsteps.leftBy < 0 || strainSubsteps.leftBy > 100)
     in.fail("cloth sub-steps from the strain (" + std::to_string(strainSubsteps.substeps) + ", calm " +
-            std::to_string(strainSubsteps.calmSteps) + ") out of range");
+            std::to_string(strainSubsteps.calmSteps) + ", last step " + std::to_string(strainSubsteps.leftBy) +
+            ") out of range");
   const int moduleCount = in.get<std::int32_t>();
   if (moduleCount != int(modules_.size()))
     in.fail("it was written for " + std::to_string(moduleCount) + " scene elements, the scene has " +

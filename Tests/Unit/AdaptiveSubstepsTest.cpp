@@ -203,17 +203,58 @@ TEST(AdaptiveSubsteps, TheStrainRaisesSubstepsAtOnceAndLowersThemOnlyAfterACalmS
   s = substepsForStrain(s, 10, 200, 1000, 4, 32);  // exactly 1 %: held
   EXPECT_EQ(s.substeps, 9);
   for (int k = 1; k < kStrainCalmSteps; ++k) {
-    s = substepsForStrain(s, 0, 9, 1000, 4, 32);  // p99 under a quarter of the target
+    s = substepsForStrain(s, 0, 9, 1000, 4, 32);  // p99 predicted at the lowered count under the bound
     ASSERT_EQ(s.substeps, 9) << "lowered after " << k << " calm steps";
   }
   s = substepsForStrain(s, 0, 9, 1000, 4, 32);
-  EXPECT_EQ(s.substeps, 8);
+  EXPECT_EQ(s.substeps, 7);  // a quarter fewer (9 / 4 = 2)
   for (int k = 1; k < kStrainCalmSteps; ++k) s = substepsForStrain(s, 0, 9, 1000, 4, 32);
   s = substepsForStrain(s, 0, 11, 1000, 4, 32);  // one step not calm: the spell starts again
   for (int k = 1; k < kStrainCalmSteps; ++k) s = substepsForStrain(s, 0, 9, 1000, 4, 32);
-  EXPECT_EQ(s.substeps, 8);
+  EXPECT_EQ(s.substeps, 7);
+  s = substepsForStrain(s, 0, 9, 1000, 4, 32);
+  EXPECT_EQ(s.substeps, 6);  // one fewer at least
   for (int k = 0; k < 20; ++k) s = substepsForStrain(s, 500, 900, 1000, 4, 32);
   EXPECT_EQ(s.substeps, 32);  // never past the most
   for (int k = 0; k < 100 * kStrainCalmSteps; ++k) s = substepsForStrain(s, 0, 0, 1000, 4, 32);
   EXPECT_EQ(s.substeps, 4);  // nor under the fewest
+}
+
+TEST(AdaptiveSubsteps, TheStrainLowersTheCountOnlyWhereTheSquareLawKeepsTheLoweredStrainUnderTheTarget) {
+  // Strain left at m sub-steps is about (m / k)^2 as large at k: the bound
+  // an edge must stay under for the count to be lowered from s to its
+  // lowered count k is 0.8 target (k / m)^2, m the count that left it.
+  StrainSubsteps s;
+  s.substeps = 16;
+  s.leftBy = 16;
+  EXPECT_EQ(strainLoweredSubsteps(16, 4), 12);
+  EXPECT_EQ(strainLoweredSubsteps(5, 4), 4);
+  EXPECT_EQ(strainLoweredSubsteps(13, 12), 12);
+  EXPECT_NEAR(strainCalmBound(s, 0.02f, 4), 0.8f * 0.02f * (12.f / 16.f) * (12.f / 16.f), 1e-7f);
+  // A cloth whose travel asked for more sub-steps than the strain (24):
+  // its strain predicted at 12 is (24 / 12)^2 = 4 times as large.
+  s.leftBy = 24;
+  EXPECT_NEAR(strainCalmBound(s, 0.02f, 4), 0.8f * 0.02f / 4.f, 1e-7f);
+  // The lowered count's predicted strain stays under the raising target, so
+  // a cloth whose strain follows the law settles instead of swinging: from
+  // 16 sub-steps at 0.4 of the target, lowering stops where the next
+  // lowering would pass 0.8 of it, and is never followed by a raise.
+  StrainSubsteps r;
+  r.substeps = 16;
+  const double strainAt16 = 0.4 * 0.02;
+  int raises = 0;
+  for (int step = 0; step < 400; ++step) {
+    const int m = r.substeps;
+    const double strain = strainAt16 * (16.0 / m) * (16.0 / m);
+    r.leftBy = m;
+    const float bound = strainCalmBound(r, 0.02f, 4);
+    const StrainSubsteps next = substepsForStrain(r, strain > 0.02 ? 1000 : 0, strain > bound ? 1000 : 0, 1000, 4, 64);
+    raises += next.substeps > r.substeps;
+    r = next;
+  }
+  EXPECT_EQ(raises, 0);
+  const double settled = strainAt16 * (16.0 / r.substeps) * (16.0 / r.substeps);
+  EXPECT_LT(settled, 0.02);
+  EXPECT_GT(settled, 0.8 * 0.02 * 0.5);  // not lowered needlessly far: one more lowering would pass 0.8 target
+  EXPECT_LT(r.substeps, 16);
 }
