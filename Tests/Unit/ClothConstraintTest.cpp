@@ -102,8 +102,8 @@ TEST(ClothSystem, ASheetWithNothingChosenHangsLikeClothAndComesToRest) {
   // counts, sub-steps from the speed) keeps its strain near cloth's and
   // brings it to rest without jitter: kinetic energy below 1e-4 of its peak
   // over the whole last second of 5. Measured: worst frame mean 0.54-0.57 %,
-  // p99 2.23-2.85 % (the first swing; sub-steps from the strain take 4, 6, then 9,
-  // and settle at 7; at a fixed 4 x 12 the p99 is 3.6 %, under the paper's
+  // p99 2.23-2.85 % (the first swing; sub-steps from the strain take 4, 9, 7, 6
+  // and settle at 5; at a fixed 4 x 12 the p99 is 3.6 %, under the paper's
   // PBD at 1 x 8 several times that); kinetic energy 1.4e-7 to 5e-7 of the
   // peak.
   test::TestRegistry reg;
