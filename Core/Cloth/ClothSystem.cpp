@@ -357,9 +357,17 @@ float ClothSystem::maxStretch(const std::vector<Float4>& position, const std::ve
 
 std::vector<ClothStrain> ClothSystem::strain(const std::vector<Float4>& position, const std::vector<int>& slot) const {
   std::vector<ClothStrain> out;
-  std::vector<double> strains;
+  std::vector<double> strains, stretch, compression;
+  // The 99th percentile of `v` (reordered).
+  const auto p99 = [](std::vector<double>& v) {
+    const std::size_t k = std::min(v.size() - 1, std::size_t(0.99 * double(v.size())));
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+    return v[k];
+  };
   for (const ClothObject& obj : objects_) {
     strains.clear();
+    stretch.clear();
+    compression.clear();
     for (int e = obj.firstEdge; e < obj.firstEdge + obj.edgeCount; ++e) {
       if (!edgeMeasured_[std::size_t(e)]) continue;
       const int a = slot[std::size_t(edges_[std::size_t(e)].a)], b = slot[std::size_t(edges_[std::size_t(e)].b)];
@@ -367,16 +375,21 @@ std::vector<ClothStrain> ClothSystem::strain(const std::vector<Float4>& position
       const double l = double(length(position[std::size_t(a)].xyz() - position[std::size_t(b)].xyz()));
       const double l0 = double(edgeRest_[std::size_t(e)]);
       strains.push_back(std::fabs(l - l0) / l0);
+      stretch.push_back(std::max(0.0, l / l0 - 1.0));
+      compression.push_back(std::max(0.0, 1.0 - l / l0));
     }
     ClothStrain s;
     if (!strains.empty()) {
       double sum = 0.0;
       for (double v : strains) sum += v;
       s.mean = sum / double(strains.size());
-      const std::size_t k = std::min(strains.size() - 1, std::size_t(0.99 * double(strains.size())));
-      std::nth_element(strains.begin(), strains.begin() + std::ptrdiff_t(k), strains.end());
-      s.p99 = strains[k];
       s.max = *std::max_element(strains.begin(), strains.end());
+      double stretchSum = 0.0;
+      for (double v : stretch) stretchSum += v;
+      s.stretchMean = stretchSum / double(stretch.size());
+      s.p99 = p99(strains);
+      s.stretchP99 = p99(stretch);
+      s.compressionP99 = p99(compression);
     }
     out.push_back(s);
   }

@@ -129,9 +129,15 @@ struct ClothView {
 enum class ClothModel { Pbd, Xpbd, Chebyshev };
 
 // Edge strain |l - l0| / l0 of one cloth: over its warp and weft edges on a
-// generated sheet, over all edges on a mesh.
+// generated sheet, over all edges on a mesh. Its two sides apart as well:
+// stretch max(0, l / l0 - 1) and compression max(0, 1 - l / l0), each
+// over all those edges. Fabric under compression buckles into wrinkles
+// finer than the mesh (a sheet pulled at its corners wrinkles along the
+// pulls), which a mesh shows as shortened edges; stretch is what the
+// threads resist (Doc/model.md, "The default cloth solver").
 struct ClothStrain {
   double mean = 0.0, p99 = 0.0, max = 0.0;
+  double stretchMean = 0.0, stretchP99 = 0.0, compressionP99 = 0.0;
 };
 
 // How one cloth object is made (host side, from a <Cloth> element).

@@ -128,6 +128,9 @@ StatsRow frameStats(const Simulation& sim, const FrameData& frame) {
     for (std::size_t k = 0; k < strain.size(); ++k) {
       row.add("strain_mean_" + cloth.objects()[k].name, strain[k].mean);
       row.add("strain_p99_" + cloth.objects()[k].name, strain[k].p99);
+      row.add("stretch_mean_" + cloth.objects()[k].name, strain[k].stretchMean);
+      row.add("stretch_p99_" + cloth.objects()[k].name, strain[k].stretchP99);
+      row.add("compression_p99_" + cloth.objects()[k].name, strain[k].compressionP99);
     }
   }
   static const FrameData::ModuleCopies kNone;
