@@ -14,8 +14,9 @@
 //   at 1.6 times (Doc/performance.md, "Default cloth solver").
 //   With the sub-steps left to the solver, it also raises them while the
 //   strain its solve leaves passes kChebyshevStrainTarget at the 99th
-//   percentile (Cloth/AdaptiveSubsteps.h), up to 4 times the fewest: a sheet hung from one diagonal then leaves 2.85 % p99 where
-//   a fixed 4 x 12 leaves 3.6 %. A scene that names its sub-steps keeps them
+//   percentile (Cloth/AdaptiveSubsteps.h), up to 8 times the fewest: a
+//   sheet hung from one diagonal then leaves 2.85 % p99 where a fixed
+//   4 x 12 leaves 3.6 %. A scene that names its sub-steps keeps them
 //   (the figure scenes, whose counts are tuned and timed).
 // - pbd only: the paper's 1 x 8, sub-steps fixed (its stiffness is per
 //   iteration, Eq. 5).
