@@ -16,14 +16,15 @@ void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* 
 }
 
 void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const ClothEdge* edges, const float* rest,
-                        int n, float target, int fewest, const SubstepClock* clock, int* flags, int* scan,
-                        int* counts) {
+                        int n, float target, int fewest, bool stretchOnly, const SubstepClock* clock, int* flags,
+                        int* scan, int* counts) {
   if (n == 0) return;
   forEach(d, n, SOAK_LAMBDA(int e) {
     const float calm = strainCalmBound(clock->strain, target, fewest);
     const Vec3 a = p.position[vertexSlot[edges[e].a]].xyz();
     const Vec3 b = p.position[vertexSlot[edges[e].b]].xyz();
-    const float strain = fabsf(length(a - b) - rest[e]) / rest[e];
+    const float change = (length(a - b) - rest[e]) / rest[e];
+    const float strain = stretchOnly ? change : fabsf(change);
     flags[e] = strain > target;
     flags[n + e] = strain > calm;
   }, "cloth.substeps.strain");

@@ -98,10 +98,13 @@ SOAK_INLINE float strainCalmBound(StrainSubsteps s, float target, int fewest) {
 struct SubstepClock;
 // Writes to counts[0] the edges whose strain |l - l0| / l0 exceeds `target`
 // and to counts[1] those exceeding strainCalmBound of the clock's strain
-// state (device memory), without a wait. `flags` and `scan` hold 2 n ints.
+// state (device memory), without a wait. With `stretchOnly`
+// (Simulation.clothStrainStretchOnly) the strain is the stretch
+// max(0, l / l0 - 1): compressed edges, where fabric wrinkles finer than
+// the mesh, do not count. `flags` and `scan` hold 2 n ints.
 void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const ClothEdge* edges, const float* rest,
-                        int n, float target, int fewest, const SubstepClock* clock, int* flags, int* scan,
-                        int* counts);
+                        int n, float target, int fewest, bool stretchOnly, const SubstepClock* clock, int* flags,
+                        int* scan, int* counts);
 
 // Contact passes from the speed (Simulation.clothContactsBySpeed).
 //

@@ -26,7 +26,8 @@ void ClothStep::setStrainSubsteps(StrainSubsteps s) {
   clock_.upload({k});
 }
 
-void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget, int fewest) {
+void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget, int fewest,
+                              bool stretchOnly) {
   const ClothView c = cloth.view();
   vertexTravel_.resize(std::size_t(c.vertexCount));
   maxTravel_.resize(1);
@@ -39,7 +40,7 @@ void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt, floa
   strainScan_.resize(2 * std::size_t(edges.count));
   strainCounts_.resize(2);
   measureClothStrain(device_, p, c.vertexSlot, edges.edges, edges.rest, edges.count, strainTarget, fewest,
-                     clock_.data(), strainFlags_.data(), strainScan_.data(), strainCounts_.data());
+                     stretchOnly, clock_.data(), strainFlags_.data(), strainScan_.data(), strainCounts_.data());
 }
 
 void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
@@ -54,7 +55,7 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
   // The sub-steps, chosen on the device (AdaptiveSubsteps.h).
   const bool bySpeed = s.substepTravel > 0.f;
-  if (bySpeed && !travelQueued_) measureTravel(p, cloth, s.dt, s.strainTarget, s.substeps);  // a predict stage that did not
+  if (bySpeed && !travelQueued_) measureTravel(p, cloth, s.dt, s.strainTarget, s.substeps, s.strainStretchOnly);  // a predict stage that did not
   SubstepChoice choice;
   choice.fewest = s.substeps;
   choice.travel = bySpeed ? s.substepTravel : 0.f;

@@ -23,6 +23,7 @@ struct ClothStepSettings {
   bool contactsBySpeed = false;  // Simulation.clothContactsBySpeed
   int strainMaxSubsteps = 0; // Simulation.clothStrainMaxSubsteps: the strain's most; 0: kStrainSubstepsFactor x substeps
   float strainTarget = 0.f;  // Simulation.clothStrainTarget: > 0 (with substepTravel), sub-steps from the strain (AdaptiveSubsteps.h)
+  bool strainStretchOnly = false;  // Simulation.clothStrainStretchOnly
   int iterations = 1;        // Simulation.clothIterations: constraint rounds per (sub-)step
   float spectralRadius = 0;  // Simulation.clothSpectralRadius (chebyshev)
   int contactPasses = 2;     // particle contact passes per (sub-)step
@@ -40,8 +41,9 @@ class ClothStep {
   // the predict stage left, on the device, for run() to choose the step's
   // sub-steps from. The predict stage calls it.
   // With Simulation.clothStrainTarget as well, the strain the step before
-  // left (AdaptiveSubsteps.h); `fewest` is Simulation.clothSubsteps.
-  void measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget, int fewest);
+  // left (AdaptiveSubsteps.h); `fewest` is Simulation.clothSubsteps,
+  // `stretchOnly` Simulation.clothStrainStretchOnly.
+  void measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget, int fewest, bool stretchOnly);
   // Chooses the step's sub-steps on the device (SubstepClock.h) and runs
   // them. The host reads the count only where it may be 1 (sub-steps from
   // the speed with Simulation.clothSubsteps 1: one sub-step is the paper's

@@ -292,6 +292,11 @@ void registerCoreElements(ModuleRegistry& r) {
               "alone. < 0: the solver's own (0.02 where clothSubsteps is left to the solver and no cloth is pbd, "
               "else 0).",
               -1.0, 1.0)
+        .boolean("clothStrainStretchOnly", &S::clothStrainStretchOnly,
+                 "With clothStrainTarget > 0: the strain rule counts an edge's stretch alone, not its "
+                 "compression. A sheet held at points wrinkles across the pulls, finer than its mesh, and shows it "
+                 "as shortened edges that more sub-steps barely change (Doc/model.md, \"The default cloth "
+                 "solver\"). false: |l - l0| / l0, the strain stats.csv's strain_p99_* columns report.")
         .boolean("clothContactsBySpeed", &S::clothContactsBySpeed,
                  "With clothSubstepTravel > 0: the cloth's contact passes (particle and vertex-triangle contact) "
                  "run in as many of a step's sub-steps as its speed asks for (one a step for slow cloth), spread "

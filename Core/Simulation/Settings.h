@@ -41,6 +41,7 @@ struct SimulationSettings {
   int clothMaxSubsteps = 32;   // the most sub-steps clothSubstepTravel may ask for
   bool clothContactsBySpeed = true;  // contact passes in as many sub-steps as the travel asks for (AdaptiveSubsteps.h)
   int clothStrainMaxSubsteps = 0;  // the most sub-steps the strain asks for; 0: kStrainSubstepsFactor x clothSubsteps
+  bool clothStrainStretchOnly = false;  // the strain rule counts stretch alone, not compression (AdaptiveSubsteps.h)
   float clothStrainTarget = -1.f;  // > 0, with clothSubstepTravel: sub-steps from the strain left (Cloth/AdaptiveSubsteps.h); < 0: the solver's own
   float clothSpectralRadius = 0.6f;   // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
   int couplingPasses = 2;      // passes of the water-triangle constraint per step (n_s of Eq. 5 for it)

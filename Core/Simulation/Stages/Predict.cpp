@@ -11,7 +11,8 @@ void runPredict(CoreStageState& state, Simulation& sim) {
   // The cloth's travel this step decides its sub-steps (Cloth/AdaptiveSubsteps.h).
   if (!sim.cloth.empty() && sim.settings.clothSubstepTravel > 0.f)
     state.cloth.measureTravel(sim.particles.view(), sim.cloth, float(sim.settings.timeStep),
-                              sim.settings.clothStrainTarget, sim.settings.clothSubsteps);
+                              sim.settings.clothStrainTarget, sim.settings.clothSubsteps,
+                              sim.settings.clothStrainStretchOnly);
 }
 
 }  // namespace soak
