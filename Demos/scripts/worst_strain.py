@@ -9,8 +9,9 @@ columns) and its time, the mean strain in that frame, the largest
 per-frame mean, how many frames pass 3 % at the 99th percentile (issue
 49's target), the same for stretch and compression apart (where the
 run wrote stretch_p99_* and compression_p99_*), the cloth sub-steps a
-step (mean and most) and the frames' step time (median and mean of step_ms). Python's standard library only, so
-it runs on the lent GPU machine as well.
+step (mean and most) and the frames' step time (median and mean of
+step_ms). Python's standard library only, so it runs on the lent GPU
+machine as well.
 """
 import csv
 import statistics

@@ -87,58 +87,53 @@ TEST(ClothSolvers, StretchLimitsCarryTheSheetsStiffnessAcrossIt) {
   EXPECT_LT(with, 0.5 * without);
 }
 
-TEST(ClothStrain, WarpAndWeftEdgesOfASheetStretchedAlongOneAxis) {
-  // A 10 x 10-cell sheet stretched by 2 % along its first axis: its warp
-  // edges (along u) are 2 % long, its weft edges unchanged; the diagonals,
-  // not counted on a sheet, would add their own 1 %.
+namespace {
+// ClothSystem::strain of a 10 x 10-cell sheet (1 m) with its rest positions
+// scaled by `u` along its first axis and `v` along its second.
+ClothStrain strainOfScaledSheet(float u, float v) {
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
       "<Scene><Cloth name='s' origin='0 1 0' axisU='1 0 0' axisV='0 0 1' width='1' height='1' cellsU='10' "
       "cellsV='10'/></Scene>",
       Device::Cpu, reg);
   std::vector<Float4> pos = sim->particles.downloadPositions();
-  for (Float4& p : pos) p.x *= 1.02f;
+  for (Float4& p : pos) {
+    p.x *= u;
+    p.z *= v;
+  }
   const std::vector<ClothStrain> s =
       sim->cloth.strain(pos, sim->cloth.vertexSlots(sim->particles.downloadIds(), sim->particles.downloadPhases()));
-  ASSERT_EQ(s.size(), 1u);
-  EXPECT_NEAR(s[0].mean, 0.01, 1e-5);  // 110 warp edges at 2 %, 110 weft edges at 0
-  EXPECT_NEAR(s[0].p99, 0.02, 1e-5);
-  EXPECT_NEAR(s[0].max, 0.02, 1e-5);
-  EXPECT_NEAR(s[0].stretchP99, 0.02, 1e-5);
-  EXPECT_NEAR(s[0].compressionP99, 0.0, 1e-7);
+  EXPECT_EQ(s.size(), 1u);
+  return s.empty() ? ClothStrain{} : s[0];
+}
+}  // namespace
+
+TEST(ClothStrain, WarpAndWeftEdgesOfASheetStretchedAlongOneAxis) {
+  // A 10 x 10-cell sheet stretched by 2 % along its first axis: its warp
+  // edges (along u) are 2 % long, its weft edges unchanged; the diagonals,
+  // not counted on a sheet, would add their own 1 %.
+  const ClothStrain s = strainOfScaledSheet(1.02f, 1.f);
+  EXPECT_NEAR(s.mean, 0.01, 1e-5);  // 110 warp edges at 2 %, 110 weft edges at 0
+  EXPECT_NEAR(s.p99, 0.02, 1e-5);
+  EXPECT_NEAR(s.max, 0.02, 1e-5);
+  EXPECT_NEAR(s.stretchP99, 0.02, 1e-5);
+  EXPECT_NEAR(s.compressionP99, 0.0, 1e-7);
 }
 
 TEST(ClothStrain, StretchAndCompressionAreCountedApart) {
   // The same sheet 3 % longer along u and 1 % shorter along v: |strain|
   // puts both sides together, stretch and compression each see their own
   // side of the edges.
-  test::TestRegistry reg;
-  auto sim = test::makeSimulation(
-      "<Scene><Cloth name='s' origin='0 1 0' axisU='1 0 0' axisV='0 0 1' width='1' height='1' cellsU='10' "
-      "cellsV='10'/></Scene>",
-      Device::Cpu, reg);
-  std::vector<Float4> pos = sim->particles.downloadPositions();
-  for (Float4& p : pos) {
-    p.x *= 1.03f;
-    p.z *= 0.99f;
-  }
-  const std::vector<ClothStrain> s =
-      sim->cloth.strain(pos, sim->cloth.vertexSlots(sim->particles.downloadIds(), sim->particles.downloadPhases()));
-  ASSERT_EQ(s.size(), 1u);
-  EXPECT_NEAR(s[0].mean, 0.02, 1e-5);  // 110 edges at 3 %, 110 at 1 %
-  EXPECT_NEAR(s[0].p99, 0.03, 1e-5);
-  EXPECT_NEAR(s[0].stretchP99, 0.03, 1e-5);
-  EXPECT_NEAR(s[0].stretchMean, 0.015, 1e-5);
-  EXPECT_NEAR(s[0].compressionP99, 0.01, 1e-5);
+  const ClothStrain s = strainOfScaledSheet(1.03f, 0.99f);
+  EXPECT_NEAR(s.mean, 0.02, 1e-5);  // 110 edges at 3 %, 110 at 1 %
+  EXPECT_NEAR(s.p99, 0.03, 1e-5);
+  EXPECT_NEAR(s.stretchP99, 0.03, 1e-5);
+  EXPECT_NEAR(s.stretchMean, 0.015, 1e-5);
+  EXPECT_NEAR(s.compressionP99, 0.01, 1e-5);
   // Compressed the other way round: the sides swap.
-  for (Float4& p : pos) {
-    p.x /= 1.03f * 1.03f;
-    p.z /= 0.99f * 0.99f;
-  }
-  const std::vector<ClothStrain> t =
-      sim->cloth.strain(pos, sim->cloth.vertexSlots(sim->particles.downloadIds(), sim->particles.downloadPhases()));
-  EXPECT_NEAR(t[0].stretchP99, 1.0 / 0.99 - 1.0, 1e-5);
-  EXPECT_NEAR(t[0].compressionP99, 1.0 - 1.0 / 1.03, 1e-5);
+  const ClothStrain t = strainOfScaledSheet(1.f / 1.03f, 1.f / 0.99f);
+  EXPECT_NEAR(t.stretchP99, 1.0 / 0.99 - 1.0, 1e-5);
+  EXPECT_NEAR(t.compressionP99, 1.0 - 1.0 / 1.03, 1e-5);
 }
 
 namespace {
