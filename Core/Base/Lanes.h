@@ -105,6 +105,19 @@ SOAK_INLINE Vec3 laneFrom(const Lanes& l, Vec3 v, int src) {
   return Vec3(laneFrom(l, v.x, src), laneFrom(l, v.y, src), laneFrom(l, v.z, src));
 }
 
+// The sum of v over this lane and the lanes before it in the group.
+SOAK_INLINE int laneInclusiveScan(const Lanes& l, int v) {
+#if defined(__CUDA_ARCH__)
+  for (int o = 1; o < l.size; o *= 2) {
+    const int before = __shfl_up_sync(l.mask, v, o, l.size);
+    if (l.index >= o) v += before;
+  }
+#else
+  (void)l;
+#endif
+  return v;
+}
+
 // The lowest lane whose vote is set (votes: laneBallot's, not zero).
 SOAK_INLINE int firstVote(unsigned votes) {
 #if defined(__CUDA_ARCH__)

@@ -53,42 +53,50 @@ struct WaterTrianglePass {
     Vec3 x = start;
     bool moved = false;
     if constexpr (kRounds) {
-      // The one-lane pass (below) by the group, cell by cell: in rounds,
-      // each lane takes the next entry of the cell's bucket and, for a
-      // cloth candidate, looks for its first triangle that corrects the
-      // particle where it is now; the lowest lane with one gives the
-      // pass's next correction (every triangle before it was looked at
-      // from the same place and gave none), every lane adds it, and the
-      // next round starts at that entry, after that triangle. The same
-      // corrections in the same order as one lane: the same bits. Most
-      // particles get none, and their pass is one look at each candidate,
-      // shared by the lanes.
+      // The one-lane pass (below) by the group: in rounds, each lane takes
+      // the next entry of the box's cells' buckets and, for a cloth
+      // candidate, looks for its first triangle that corrects the particle
+      // where it is now; the lowest lane with one gives the pass's next
+      // correction (every triangle before it was looked at from the same
+      // place and gave none), every lane adds it, and the next round starts
+      // at that entry, after that triangle. The same corrections in the
+      // same order as one lane: the same bits. Most particles get none, and
+      // their pass is one look at each candidate, shared by the lanes.
+      // The box's cells go lanes.size at a time, their buckets laid end to
+      // end (CellBatch), so a round takes the next entries across cells.
       const PathBox box(g, x0, start, triangleReach(c.maxEdgeLength, 0.5f * c.maxThickness));
-      forEachCellInBox(g, box.lo, box.hi, [&](std::uint32_t key, std::uint32_t b) {
-        const BucketRange r = g.range[b];
-        std::uint32_t next = r.start;
+      const CellBox cells(g, box.lo, box.hi);
+      for (int base = 0; base < cells.count; base += lanes.size) {
+        std::uint32_t bucket = 0, key = 0;
+        const bool has = base + lanes.index < cells.count;
+        if (has) key = cells.cell(g, base + lanes.index, bucket);
+        const CellBatch batch(g, lanes, has, key, bucket);
+        const int total = batch.total;
+        int next = 0;
         int skip = 0;  // triangles of the round's first entry already taken
-        while (next < r.end) {
-          const std::uint32_t m = next + std::uint32_t(lanes.index);
+        while (next < total) {
+          const int at = next + lanes.index;
+          std::uint32_t cellKey = 0;
+          const std::uint32_t m = batch.entry(lanes, at, cellKey);
           int hit = -1;
           Vec3 corr(0.f, 0.f, 0.f);
           float share = 0.f;
-          if (m < r.end && g.cellKey[m] == key) {
+          if (at < total && g.cellKey[m] == cellKey) {
             const int j = slotOfEntry(g, m);
             if (isCloth(p.phase[j]) && box.near(p.predicted[j].xyz())) {
               const int v = p.id[j];
-              const int first = c.firstVertexTriangleStart[v], last = c.firstVertexTriangleStart[v + 1];
-              for (int k = first + (lanes.index == 0 ? skip : 0); k < last && hit < 0; ++k) {
+              const int firstTriangle = c.firstVertexTriangleStart[v], last = c.firstVertexTriangleStart[v + 1];
+              for (int k = firstTriangle + (lanes.index == 0 ? skip : 0); k < last && hit < 0; ++k) {
                 corr = correction(k, x);
                 if (isZero(corr)) continue;
-                hit = k - first;
+                hit = k - firstTriangle;
                 share = shareOf(k);
               }
             }
           }
           const unsigned votes = laneBallot(lanes, hit >= 0);
           if (votes == 0u) {
-            next += std::uint32_t(lanes.size);
+            next += lanes.size;
             skip = 0;
             continue;
           }
@@ -97,10 +105,10 @@ struct WaterTrianglePass {
           // product as the one-lane pass does (the same contraction).
           x += laneFrom(lanes, corr, lane) * laneFrom(lanes, share, lane);
           moved = true;
-          next += std::uint32_t(lane);
+          next += lane;
           skip = laneFrom(lanes, hit, lane) + 1;
         }
-      });
+      }
       if (!lanes.leader()) return;
     } else {
       if (lanes.size > 1) {
@@ -135,7 +143,7 @@ constexpr int kCouplingBlocks = 4;
 }  // namespace
 
 void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
-                            int passes, int* movedFlag, int minLanes) {
+                            int passes, int* movedFlag, int minLanes, int exactLanes) {
   if (c.triangleCount == 0) return;
   snapshotTriangles(d, p, c);  // the passes move water only
   // Two kernels: the rounds where the pass gets groups of lanes (fewer than
@@ -148,15 +156,19 @@ void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, c
   // 18.8 -> 17.2, 5 blocks (48 registers) gained less, 3 nothing; the
   // rounds (82 registers) on fig9b 0.170-0.177 -> 0.159-0.162 ms, 3 blocks
   // nothing (Doc/performance.md).
-  const bool rounds = d == Device::Cuda && lanesFor(p.count, minLanes) > 1;
+  // exactLanes: that many lanes a particle whatever the count (lanesFor
+  // with one thread in view returns minLanes).
+  const int threads = exactLanes > 0 ? 1 : kLaneThreads;
+  if (exactLanes > 0) minLanes = exactLanes;
+  const bool rounds = d == Device::Cuda && lanesFor(p.count, minLanes, threads) > 1;
   for (int pass = 0; pass < passes; ++pass) {
     const bool first = pass == 0;
     if (rounds) {
       const WaterTrianglePass<true> f{p, g, c, vertexStiffness, passes, movedFlag, first};
-      forEachLanes<kCouplingBlocks>(d, p.count, f, "coupling.triangles", minLanes);
+      forEachLanes<kCouplingBlocks>(d, p.count, f, "coupling.triangles", minLanes, threads);
     } else {
       const WaterTrianglePass<false> f{p, g, c, vertexStiffness, passes, movedFlag, first};
-      forEachLanes<kCouplingBlocks>(d, p.count, f, "coupling.triangles", minLanes);
+      forEachLanes<kCouplingBlocks>(d, p.count, f, "coupling.triangles", minLanes, threads);
     }
   }
 }

@@ -172,8 +172,10 @@ void snapshotTriangles(Device d, ParticleView p, ClothView c, const int* onlyIf 
 // pass moved is taken again. The passes move water only, so a particle no
 // triangle corrected sees the same triangles from the same place in the
 // next pass, and again nothing would correct it (the same bits as taking
-// it again).
+// it again). On the GPU a particle takes lanesFor(count, minLanes) lanes,
+// or exactly `exactLanes` where that is > 0 (1: the one-lane walk; tests
+// compare the group sizes).
 void projectWaterOutOfCloth(Device d, ParticleView p, GridView g, ClothView c, const float* vertexStiffness,
-                            int passes, int* movedFlag, int minLanes = 1);
+                            int passes, int* movedFlag, int minLanes = 1, int exactLanes = 0);
 
 }  // namespace soak

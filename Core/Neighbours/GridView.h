@@ -133,6 +133,50 @@ SOAK_INLINE void forEachCellAround(const GridView& g, std::uint32_t centerKey, F
           (spread[0][dx + 1] | spread[1][dy + 1] | spread[2][dz + 1]) & g.bucketMask);
 }
 
+// Up to lanes.size cells' buckets laid end to end, for a group of lanes
+// (Base/Lanes.h): each lane loads one cell's bucket range, and a scan of
+// their sizes numbers the entries of all of them in the cells' order. The
+// group then takes lanes.size entries a round across cells, where a walk
+// cell by cell spends a round (a chain of dependent loads) on each cell,
+// however few entries it holds. The coupling's path boxes (27 or more
+// cells of the cloth's grid, most of them empty or nearly) walk so
+// (TriangleCoupling.cpp). The 27-cell walks of the water's grid do not:
+// there the cells are full, and finding an entry's cell costs each round
+// more than the rounds it saves (Doc/performance.md, "Cells in batches").
+struct CellBatch {
+  std::uint32_t key = 0, first = 0;  // this lane's cell: its key, its bucket's first entry
+  int before = 0;                    // entries of the batch's cells before this lane's
+  int total = 0;                     // entries of all its cells
+  // `has`: whether this lane holds a cell (key, bucket). Every lane of the
+  // group must construct it.
+  SOAK_INLINE CellBatch(const GridView& g, const Lanes& lanes, bool has, std::uint32_t cellKey,
+                        std::uint32_t bucket) {
+    int size = 0;
+    if (has) {
+      const BucketRange r = g.range[bucket];
+      key = cellKey;
+      first = r.start;
+      size = int(r.end - r.start);
+    }
+    const int through = laneInclusiveScan(lanes, size);
+    before = through - size;
+    total = laneFrom(lanes, through, lanes.size - 1);
+  }
+  // Entry `at` of the sequence (meaningful for at < total): its index in
+  // the grid's entries, and in `cellKey` its cell's key. Every lane of the
+  // group must call it.
+  SOAK_INLINE std::uint32_t entry(const Lanes& lanes, int at, std::uint32_t& cellKey) const {
+    // The cell holding entry `at`: the last lane whose cell starts at or
+    // before it (the starts do not decrease; an empty cell starts where the
+    // next one does, and the lanes past the last cell start at total).
+    int owner = 0;
+    for (int step = lanes.size / 2; step > 0; step /= 2)
+      if (laneFrom(lanes, before, owner + step) <= at) owner += step;
+    cellKey = laneFrom(lanes, key, owner);
+    return laneFrom(lanes, first, owner) + std::uint32_t(at - laneFrom(lanes, before, owner));
+  }
+};
+
 // Calls f(j) once for every slot j whose cell is one of the 27 cells around
 // the cell with key `centerKey` (with `lanes`: this lane's share of them).
 // The caller applies its own distance test.
@@ -220,22 +264,45 @@ SOAK_INLINE bool mayHoldInBox(const GridView& g, const int a[3], const int b[3])
 // A box query visits the cells that overlap the box [lo, hi], at most
 // kMaxBoxCells per axis (centred on the box beyond that).
 constexpr int kMaxBoxCells = 8;
+
+// The cells of a box query, numbered x fastest, then y, then z: the order
+// forEachCellInBox visits them. No cells where the near bits prove the box
+// empty (mayHoldInBox).
+struct CellBox {
+  int a[3], b[3];
+  int nx = 0, nxy = 0, count = 0;
+  SOAK_INLINE CellBox(const GridView& g, Vec3 lo, Vec3 hi)
+      : a{cellCoordinate(lo.x, g.invCellSize), cellCoordinate(lo.y, g.invCellSize),
+          cellCoordinate(lo.z, g.invCellSize)},
+        b{cellCoordinate(hi.x, g.invCellSize), cellCoordinate(hi.y, g.invCellSize),
+          cellCoordinate(hi.z, g.invCellSize)} {
+    for (int k = 0; k < 3; ++k)
+      if (b[k] - a[k] >= kMaxBoxCells) {
+        const int mid = a[k] + (b[k] - a[k]) / 2;
+        a[k] = mid - kMaxBoxCells / 2;
+        b[k] = a[k] + kMaxBoxCells - 1;
+      }
+    if (!mayHoldInBox(g, a, b)) return;
+    nx = b[0] - a[0] + 1;
+    nxy = nx * (b[1] - a[1] + 1);
+    count = nxy * (b[2] - a[2] + 1);
+  }
+  // Cell i's key; its bucket in `bucket`.
+  SOAK_INLINE std::uint32_t cell(const GridView& g, int i, std::uint32_t& bucket) const {
+    const int z = a[2] + i / nxy, y = a[1] + (i % nxy) / nx, x = a[0] + i % nx;
+    bucket = (spreadAxis(z, 2) | spreadAxis(y, 1) | spreadAxis(x, 0)) & g.bucketMask;
+    return packCellKey(x, y, z);
+  }
+};
+
 // Calls f(key, bucket) for every cell of the box, in the order
-// forEachCandidateInBox visits them (for passes that walk each cell's
-// bucket themselves, in rounds of lanes).
+// forEachCandidateInBox visits them.
 template <class F>
 SOAK_INLINE void forEachCellInBox(const GridView& g, Vec3 lo, Vec3 hi, F&& f) {
-  int a[3] = {cellCoordinate(lo.x, g.invCellSize), cellCoordinate(lo.y, g.invCellSize),
-              cellCoordinate(lo.z, g.invCellSize)};
-  int b[3] = {cellCoordinate(hi.x, g.invCellSize), cellCoordinate(hi.y, g.invCellSize),
-              cellCoordinate(hi.z, g.invCellSize)};
-  for (int k = 0; k < 3; ++k)
-    if (b[k] - a[k] >= kMaxBoxCells) {
-      const int mid = a[k] + (b[k] - a[k]) / 2;
-      a[k] = mid - kMaxBoxCells / 2;
-      b[k] = a[k] + kMaxBoxCells - 1;
-    }
-  if (!mayHoldInBox(g, a, b)) return;
+  const CellBox box(g, lo, hi);
+  if (box.count == 0) return;
+  const int* a = box.a;
+  const int* b = box.b;
   for (int z = a[2]; z <= b[2]; ++z) {
     const std::uint32_t sz = spreadAxis(z, 2);
     for (int y = a[1]; y <= b[1]; ++y) {
