@@ -35,15 +35,19 @@
 
 namespace soak {
 
-// One stretch edge as its vertex sees it: the other end, its rest length and
-// stiffness (N/m). A unilateral one (a stretch limit) only pulls when longer
-// than its rest length.
-struct alignas(16) JacobiSpring {
+// One stretch edge as its vertex sees it: the other end and its rest
+// length, in 8 bytes (a phase reads every spring of the cloth, so their
+// size is the phase's traffic). A unilateral one (a stretch limit), which
+// only pulls when longer than its rest length, holds the rest length
+// negated. The stiffness is the cloth's, the same for all of a vertex's
+// springs, loaded once a vertex (ClothView::springStiffness).
+struct alignas(8) JacobiSpring {
   int other = 0;
-  float rest = 0.f;
-  float stiffness = 0.f;
-  int unilateral = 0;
+  float rest = 0.f;  // < 0: unilateral, with rest length -rest
 };
+SOAK_INLINE JacobiSpring makeSpring(int other, float rest, bool unilateral) {
+  return JacobiSpring{other, unilateral ? -rest : rest};
+}
 // One bend (Eq. 9) as one of its four vertices sees it: the bend's index in
 // the Jacobi bend arrays and which of its vertices this one is (0-3).
 struct alignas(8) JacobiBendRef {
@@ -88,6 +92,11 @@ SOAK_INLINE void addStretchTerm(JacobiSums& s, Vec3 xi, Vec3 xj, float rest, flo
   const float len2 = lengthSquared(d);
   if (len2 < 1e-24f || (unilateral && len2 <= rest * rest)) return;
   s.add(xj + d * (rest / sqrtf(len2)), stiffness);
+}
+
+// The term of spring sp, of stiffness k (its cloth's).
+SOAK_INLINE void addSpringTerm(JacobiSums& s, Vec3 xi, Vec3 xj, JacobiSpring sp, float k) {
+  addStretchTerm(s, xi, xj, fabsf(sp.rest), k, sp.rest < 0.f);
 }
 
 // Weight of a collider's term: a contact is as hard as a constraint gets,

@@ -66,39 +66,41 @@ struct JacobiLaunch {
 constexpr int kSpringChunk = 4;
 
 #if defined(__SSE2__) && !defined(__CUDA_ARCH__)
-// The CPU's spring sum, four springs to an SSE register: the springs' and
-// their other ends' 16-byte records are loaded and transposed, and each
-// term of addStretchTerm is computed in all four lanes and masked where it
-// does not pull (a slack limit, coincident ends). The four lanes' sums are
-// added at the end, then the last springs one by one: a fixed order, so a
-// run's bits do not depend on anything but its inputs. The README
+// The CPU's spring sum, four springs to an SSE register: the springs'
+// records are loaded two to a register and split into their other ends
+// and rest lengths, the other ends' positions loaded and transposed, and
+// each term of addSpringTerm computed in all four lanes and masked where
+// it does not pull (a slack limit, coincident ends). The four lanes' sums
+// are added at the end, then the last springs one by one: a fixed order,
+// so a run's bits do not depend on anything but its inputs. The README
 // example's step on one thread: 252-269 ms with the scalar loop, 212-222
 // with this one (Doc/performance.md, "The default's cost").
-SOAK_INLINE void addSpringsSse(JacobiSums& sums, const ClothView& c, const Float4* x, int v, Vec3 xi) {
+SOAK_INLINE void addSpringsSse(JacobiSums& sums, const ClothView& c, const Float4* x, int v, Vec3 xi, float stiffness) {
   const __m128 xiX = _mm_set1_ps(xi.x), xiY = _mm_set1_ps(xi.y), xiZ = _mm_set1_ps(xi.z);
-  const __m128 tiny = _mm_set1_ps(1e-24f);
+  const __m128 tiny = _mm_set1_ps(1e-24f), k = _mm_set1_ps(stiffness), zero = _mm_setzero_ps();
+  const __m128 signBit = _mm_set1_ps(-0.f);
   __m128 sumX = _mm_setzero_ps(), sumY = _mm_setzero_ps(), sumZ = _mm_setzero_ps(), sumW = _mm_setzero_ps();
   int e = c.springStart[v];
   const int end = c.springStart[v + 1];
   for (; e + 4 <= end; e += 4) {
-    // Rows: other, rest, stiffness, unilateral (JacobiSpring).
+    // Springs e, e+1 and e+2, e+3: (other, rest) pairs.
     const float* sp = reinterpret_cast<const float*>(c.springs + e);
-    __m128 other = _mm_load_ps(sp), rest = _mm_load_ps(sp + 4), stiffness = _mm_load_ps(sp + 8),
-           unilateral = _mm_load_ps(sp + 12);
-    _MM_TRANSPOSE4_PS(other, rest, stiffness, unilateral);
+    const __m128 first = _mm_loadu_ps(sp), second = _mm_loadu_ps(sp + 4);  // 8-byte aligned
+    const __m128 other = _mm_shuffle_ps(first, second, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m128 signedRest = _mm_shuffle_ps(first, second, _MM_SHUFFLE(3, 1, 3, 1));
     alignas(16) int index[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(index), _mm_castps_si128(other));
     __m128 px = _mm_load_ps(&x[index[0]].x), py = _mm_load_ps(&x[index[1]].x), pz = _mm_load_ps(&x[index[2]].x),
            pw = _mm_load_ps(&x[index[3]].x);
     _MM_TRANSPOSE4_PS(px, py, pz, pw);
+    const __m128 rest = _mm_andnot_ps(signBit, signedRest);
+    const __m128 isUnilateral = _mm_cmplt_ps(signedRest, zero);
     const __m128 dx = _mm_sub_ps(xiX, px), dy = _mm_sub_ps(xiY, py), dz = _mm_sub_ps(xiZ, pz);
     const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-    const __m128 isUnilateral = _mm_castsi128_ps(
-        _mm_cmpeq_epi32(_mm_cmpeq_epi32(_mm_castps_si128(unilateral), _mm_setzero_si128()), _mm_setzero_si128()));
     const __m128 slack = _mm_and_ps(isUnilateral, _mm_cmple_ps(len2, _mm_mul_ps(rest, rest)));
     const __m128 pulls = _mm_andnot_ps(slack, _mm_cmpge_ps(len2, tiny));
     const __m128 scale = _mm_and_ps(pulls, _mm_div_ps(rest, _mm_sqrt_ps(len2)));
-    const __m128 w = _mm_and_ps(pulls, stiffness);
+    const __m128 w = _mm_and_ps(pulls, k);
     sumX = _mm_add_ps(sumX, _mm_mul_ps(_mm_add_ps(px, _mm_mul_ps(dx, scale)), w));
     sumY = _mm_add_ps(sumY, _mm_mul_ps(_mm_add_ps(py, _mm_mul_ps(dy, scale)), w));
     sumZ = _mm_add_ps(sumZ, _mm_mul_ps(_mm_add_ps(pz, _mm_mul_ps(dz, scale)), w));
@@ -115,15 +117,17 @@ SOAK_INLINE void addSpringsSse(JacobiSums& sums, const ClothView& c, const Float
   sums.weight += (lane[3][0] + lane[3][1]) + (lane[3][2] + lane[3][3]);
   for (; e < end; ++e) {
     const JacobiSpring s = c.springs[e];
-    addStretchTerm(sums, xi, x[s.other].xyz(), s.rest, s.stiffness, s.unilateral != 0);
+    addSpringTerm(sums, xi, x[s.other].xyz(), s, stiffness);
   }
 }
 #endif
 
-SOAK_INLINE void addSprings(JacobiSums& sums, const ClothView& c, const Float4* x, int v, Vec3 xi, const Lanes& l) {
+// The vertex's springs, each of weight `stiffness` (the cloth's).
+SOAK_INLINE void addSprings(JacobiSums& sums, const ClothView& c, const Float4* x, int v, Vec3 xi, float stiffness,
+                            const Lanes& l) {
 #if defined(__SSE2__) && !defined(__CUDA_ARCH__)
   (void)l;  // one lane a vertex on the CPU
-  addSpringsSse(sums, c, x, v, xi);
+  addSpringsSse(sums, c, x, v, xi, stiffness);
 #else
   for (int e = c.springStart[v] + l.index, end = c.springStart[v + 1]; e < end; e += kSpringChunk * l.size) {
     JacobiSpring sp[kSpringChunk];
@@ -136,7 +140,7 @@ SOAK_INLINE void addSprings(JacobiSums& sums, const ClothView& c, const Float4* 
       if (e + q * l.size < end) other[q] = x[sp[q].other].xyz();
     SOAK_UNROLL
     for (int q = 0; q < kSpringChunk; ++q)
-      if (e + q * l.size < end) addStretchTerm(sums, xi, other[q], sp[q].rest, sp[q].stiffness, sp[q].unilateral != 0);
+      if (e + q * l.size < end) addSpringTerm(sums, xi, other[q], sp[q], stiffness);
   }
 #endif
 }
@@ -233,14 +237,17 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, Sub
           const Vec3 y = yr.xyz();
           const Vec3 older = out[v].xyz();  // x_{k-1}
           const VertexTethers tethers(c, v, x);
+          const float stiffness = loadReadOnly(c.springStiffness + v);
+
           JacobiSums sums;
-          addSprings(sums, c, x, v, xi, l);
+          addSprings(sums, c, x, v, xi, stiffness, l);
           sums.weighted = laneSum(l, sums.weighted);
           sums.weight = laneSum(l, sums.weight);
           if (!l.leader()) return;
           addColliderTerms(sums, xi, yr.w, colliders, colliderCount, t.colliderLag());
           const float h = t.h();
           Vec3 xhat = jacobiMinimum(sums, y, 1.f / (h * h) / xv.w);
+
           // Tethers as hard limits on the Jacobi step's result: their pins
           // do not move during the solve, so the projection needs no other
           // vertex's new position and costs no phase; it carries the pins'

@@ -15,7 +15,7 @@ ClothSystem::ClothSystem(Device device)
     : device_(device),
       dEdges_(device), dMeasuredEdges_(device), dMeasuredEdgeRest_(device), dStrainEdges_(device), dStrainEdgeRest_(device), dEdgeRest_(device), dEdgeLambda_(device), dEdgeStiffness_(device), dBends_(device),
       dBendRest_(device), dBendLambda_(device), dBendStiffness_(device), dTriangles_(device), dTriStart_(device),
-      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dFirstEdgeStart_(device), dFirstEdgeOther_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dMaterialCoord_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
+      dTriList_(device), dAttach_(device), dFirstTriStart_(device), dFirstTri_(device), dFirstEdgeStart_(device), dFirstEdgeOther_(device), dTriangleSnapshot_(device), dSlot_(device), dThickness_(device), dTetherLength_(device), dTetherPin_(device), dRest_(device), dMaterialCoord_(device), dVertexScratch_(device), dClothFlag_(device), dClothOffset_(device), dClothSlots_(device), dJacobiVertices_(device), dSpringStart_(device), dBendRefStart_(device), dSprings_(device), dBendRefs_(device), dJacobiBends_(device), dJacobiBendRest_(device), dJacobiBendStiffness_(device), dSpringStiffness_(device), dSolvedByJacobi_(device), dJacobiPrevious_(device), dJacobiTarget_(device), dGridRange_(device), dGridKey_(device), dGridNear_(device), scratch_(device) {}
 
 int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
   const int clothIndex = int(objects_.size());
@@ -108,7 +108,7 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
                                                  : meshStretchLimits(spec.mesh.vertices, topo);
     for (const StretchLimit& l : limits) {
       limitVertex_.push_back(first + l.a);
-      limitOf_.push_back({first + l.b, l.rest, spec.stretchStiffness, 1});
+      limitOf_.push_back(makeSpring(first + l.b, l.rest, true));
     }
   }
   for (const auto& t : spec.mesh.triangles) triangles_.push_back({{first + t[0], first + t[1], first + t[2]}});
@@ -237,12 +237,14 @@ void ClothSystem::uploadJacobi() {
     refStart[v + 1] += refStart[v];
   }
   std::vector<JacobiSpring> springs(springStart[nv]);
+  std::vector<float> springStiffness(nv, 0.f);  // a cloth's edges and limits share its stiffness
   std::vector<int> fill(springStart.begin(), springStart.end() - 1);
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     const ClothEdge edge = edges_[e];
     if (!jacobi_[edge.a]) continue;
-    springs[fill[edge.a]++] = {edge.b, edgeRest_[e], edgeWeight_[e], 0};
-    springs[fill[edge.b]++] = {edge.a, edgeRest_[e], edgeWeight_[e], 0};
+    springs[fill[edge.a]++] = makeSpring(edge.b, edgeRest_[e], false);
+    springs[fill[edge.b]++] = makeSpring(edge.a, edgeRest_[e], false);
+    springStiffness[edge.a] = springStiffness[edge.b] = edgeWeight_[e];
   }
   for (std::size_t k = 0; k < limitOf_.size(); ++k) springs[fill[limitVertex_[k]]++] = limitOf_[k];
   std::vector<JacobiBendRef> refs(refStart[nv]);
@@ -253,6 +255,7 @@ void ClothSystem::uploadJacobi() {
   dJacobiVertices_.upload(jacobiVertices_);
   dSpringStart_.upload(springStart);
   dSprings_.upload(springs);
+  dSpringStiffness_.upload(springStiffness);
   dBendRefStart_.upload(refStart);
   dBendRefs_.upload(refs);
   dJacobiBends_.upload(permuted(bends_, jacobiBends));
@@ -300,6 +303,7 @@ ClothView ClothSystem::view() {
   v.jacobiVertices = dJacobiVertices_.data();
   v.springStart = dSpringStart_.data();
   v.springs = dSprings_.data();
+  v.springStiffness = dSpringStiffness_.data();
   v.bendRefStart = dBendRefStart_.data();
   v.bendRefs = dBendRefs_.data();
   v.jacobiBends = dJacobiBends_.data();

@@ -107,6 +107,7 @@ struct ClothView {
   const int* jacobiVertices = nullptr;
   const int* springStart = nullptr;
   const JacobiSpring* springs = nullptr;
+  const float* springStiffness = nullptr;  // per vertex: its springs' stiffness (N/m), its cloth's
   const int* bendRefStart = nullptr;
   const JacobiBendRef* bendRefs = nullptr;
   const ClothBend* jacobiBends = nullptr;
@@ -303,7 +304,7 @@ class ClothSystem {
   Buffer<JacobiSpring> dSprings_;
   Buffer<JacobiBendRef> dBendRefs_;
   Buffer<ClothBend> dJacobiBends_;
-  Buffer<float> dJacobiBendRest_, dJacobiBendStiffness_;
+  Buffer<float> dJacobiBendRest_, dJacobiBendStiffness_, dSpringStiffness_;
   Buffer<unsigned char> dSolvedByJacobi_;
   Buffer<Float4> dJacobiPrevious_, dJacobiTarget_;
   Buffer<BucketRange> dGridRange_;  // the cloth grid: per bucket
