@@ -238,7 +238,6 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, Sub
           const Vec3 older = out[v].xyz();  // x_{k-1}
           const VertexTethers tethers(c, v, x);
           const float stiffness = loadReadOnly(c.springStiffness + v);
-
           JacobiSums sums;
           addSprings(sums, c, x, v, xi, stiffness, l);
           sums.weighted = laneSum(l, sums.weighted);
@@ -247,7 +246,6 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, Sub
           addColliderTerms(sums, xi, yr.w, colliders, colliderCount, t.colliderLag());
           const float h = t.h();
           Vec3 xhat = jacobiMinimum(sums, y, 1.f / (h * h) / xv.w);
-
           // Tethers as hard limits on the Jacobi step's result: their pins
           // do not move during the solve, so the projection needs no other
           // vertex's new position and costs no phase; it carries the pins'

@@ -55,7 +55,8 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   contactLists_.build(p, cloth.grid(), c, s.dt, s.sizeLists);
   // The sub-steps, chosen on the device (AdaptiveSubsteps.h).
   const bool bySpeed = s.substepTravel > 0.f;
-  if (bySpeed && !travelQueued_) measureTravel(p, cloth, s.dt, s.strainTarget, s.substeps, s.strainStretchOnly);  // a predict stage that did not
+  if (bySpeed && !travelQueued_)  // a predict stage that did not
+    measureTravel(p, cloth, s.dt, s.strainTarget, s.substeps, s.strainStretchOnly);
   SubstepChoice choice;
   choice.fewest = s.substeps;
   choice.travel = bySpeed ? s.substepTravel : 0.f;

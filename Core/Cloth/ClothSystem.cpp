@@ -58,6 +58,7 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     materialCoord_.push_back(spec.mesh.uv.empty() ? Vec3(0.f, 0.f, 0.f)
                                                   : Vec3(spec.mesh.uv[v][0], spec.mesh.uv[v][1], 0.f));
     jacobi_.push_back(jacobi ? 1 : 0);
+    springStiffness_.push_back(spec.stretchStiffness);
     attach_.push_back(pinned[v] ? spec.attachCollider : -1);
     thickness_.push_back(thickness);
   }
@@ -86,7 +87,6 @@ int ClothSystem::add(const ClothSpec& spec, ParticleState& particles) {
     const int a = topo.edges[e][0], b = topo.edges[e][1];
     const int nu = spec.sheetColumns;
     edgeMeasured_.push_back(nu == 0 || a / nu == b / nu || a % nu == b % nu);
-    edgeWeight_.push_back(spec.stretchStiffness);
     edges_.push_back({first + topo.edges[e][0], first + topo.edges[e][1]});
     edgeRest_.push_back(topo.edgeRestLength[e]);
     edgeStiffness_.push_back(spec.stretch);
@@ -237,14 +237,12 @@ void ClothSystem::uploadJacobi() {
     refStart[v + 1] += refStart[v];
   }
   std::vector<JacobiSpring> springs(springStart[nv]);
-  std::vector<float> springStiffness(nv, 0.f);  // a cloth's edges and limits share its stiffness
   std::vector<int> fill(springStart.begin(), springStart.end() - 1);
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     const ClothEdge edge = edges_[e];
     if (!jacobi_[edge.a]) continue;
     springs[fill[edge.a]++] = makeSpring(edge.b, edgeRest_[e], false);
     springs[fill[edge.b]++] = makeSpring(edge.a, edgeRest_[e], false);
-    springStiffness[edge.a] = springStiffness[edge.b] = edgeWeight_[e];
   }
   for (std::size_t k = 0; k < limitOf_.size(); ++k) springs[fill[limitVertex_[k]]++] = limitOf_[k];
   std::vector<JacobiBendRef> refs(refStart[nv]);
@@ -255,7 +253,7 @@ void ClothSystem::uploadJacobi() {
   dJacobiVertices_.upload(jacobiVertices_);
   dSpringStart_.upload(springStart);
   dSprings_.upload(springs);
-  dSpringStiffness_.upload(springStiffness);
+  dSpringStiffness_.upload(springStiffness_);
   dBendRefStart_.upload(refStart);
   dBendRefs_.upload(refs);
   dJacobiBends_.upload(permuted(bends_, jacobiBends));

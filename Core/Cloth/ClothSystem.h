@@ -270,7 +270,7 @@ class ClothSystem {
   std::vector<float> tetherLength_;
   std::vector<unsigned char> edgeMeasured_;  // per edge (creation order): counted in strain()
   std::vector<unsigned char> jacobi_;         // per vertex: solved by the Jacobi solve
-  std::vector<float> edgeWeight_;  // per edge: chebyshev stiffness
+  std::vector<float> springStiffness_;  // per vertex: its cloth's chebyshev stretch stiffness (edges and limits)
   std::vector<int> jacobiVertices_;
   int jacobiBendCount_ = 0;
   std::vector<JacobiSpring> limitOf_;  // stretch limits, with limitVertex_ the vertex each belongs to
