@@ -152,7 +152,7 @@ SOAK_INLINE void addSprings(JacobiSums& sums, const ClothView& c, const Float4* 
 constexpr int kJacobiLanes = 4;
 }  // namespace
 
-void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, SubstepTime t, float rho,
+void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, SubstepTime t, ChebyshevSchedule chebyshev,
                       const Collider* colliders, int colliderCount, float collisionRadiusScale,
                       const Float4* substepStart) {
   const int n = c.jacobiVertexCount;
@@ -177,7 +177,7 @@ void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, Sub
       const int local = s - base;
       launch.kind[local] = kinds[s];
       if (kinds[s] == kIterate) {
-        omega = chebyshevWeight(++iteration, rho, omega);
+        omega = chebyshev.weight(++iteration, omega);
         launch.omega[local] = omega;
         launch.iteration[local] = short(iteration);
       }

@@ -106,7 +106,7 @@ struct Substep {
   SubstepTime t;
   bool oneSubstep;
   int iterations;
-  float rho;
+  ChebyshevSchedule chebyshev;
   ClothSubstepScratch s;
   const ClothContactPasses* contacts;
 };
@@ -149,7 +149,7 @@ void runSubstep(const Substep& a) {
   if (!oneSubstep) a.contacts->separate(a.substepView);
   a.cloth->resetMultipliers();
   solveClothConstraints(d, p, c, a.cloth->edgeColourStart(), a.cloth->bendColourStart(), a.iterations, t);
-  solveClothJacobi(d, p, c, a.iterations, t, a.rho, colliders, colliderCount, collisionRadiusScale,
+  solveClothJacobi(d, p, c, a.iterations, t, a.chebyshev, colliders, colliderCount, collisionRadiusScale,
                    oneSubstep ? nullptr : s.start);
   if (oneSubstep) {
     // The paper's single pass projects every particle out of the
@@ -176,7 +176,8 @@ void runSubstep(const Substep& a) {
 
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, SubstepTime t, int knownSubsteps,
-                  int iterations, float rho, ClothSubstepScratch s, const ClothContactPasses& contacts) {
+                  int iterations, ChebyshevSchedule chebyshev, ClothSubstepScratch s,
+                  const ClothContactPasses& contacts) {
   const ClothView c = cloth.view();
   const float dt = t.dt;
   const bool oneSubstep = knownSubsteps == 1;
@@ -201,7 +202,7 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     }, "cloth.substep.begin");
   }
   const Substep one{d, p, substepView, &cloth, colliders, colliderCount, collisionRadiusScale, gravity, t,
-                    oneSubstep, iterations, rho, s, &contacts};
+                    oneSubstep, iterations, chebyshev, s, &contacts};
   auto substep = [&one] { runSubstep(one); };
   if (oneSubstep) {
     substep();

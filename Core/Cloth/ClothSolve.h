@@ -16,14 +16,14 @@ void solveClothConstraints(Device d, ParticleView p, ClothView c, const std::vec
                            const std::vector<int>& bendColours, int iterations, SubstepTime t);
 
 // `iterations` Jacobi-Chebyshev iterations (ClothJacobi.h) over the vertices
-// of the chebyshev cloths, for the sub-step under way (t); rho is the spectral
-// radius the Chebyshev weights assume. One dependent phase per iteration.
+// of the chebyshev cloths, for the sub-step under way (t), with the
+// Chebyshev weights of `chebyshev`. One dependent phase per iteration.
 // The colliders are terms of the energy (ClothJacobi.h, addColliderTerms),
 // with each particle's collision radius times collisionRadiusScale as margin.
 // With substepStart (per particle slot, the sub-step's start), the result is
 // then projected out of the colliders with friction over the sub-step's
 // motion from there, as substepCloth does for the other cloths.
-void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, SubstepTime t, float rho,
+void solveClothJacobi(Device d, ParticleView p, ClothView c, int iterations, SubstepTime t, ChebyshevSchedule chebyshev,
                       const Collider* colliders, int colliderCount, float collisionRadiusScale,
                       const Float4* substepStart);
 
@@ -67,6 +67,7 @@ struct ClothSubstepScratch {
 // the host knows it, else 0; 1 is the paper's single pass.
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, SubstepTime t, int knownSubsteps,
-                  int iterations, float rho, ClothSubstepScratch scratch, const ClothContactPasses& contacts);
+                  int iterations, ChebyshevSchedule chebyshev, ClothSubstepScratch scratch,
+                  const ClothContactPasses& contacts);
 
 }  // namespace soak

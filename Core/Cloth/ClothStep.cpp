@@ -92,7 +92,7 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   }
   substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity,
                SubstepTime{clock_.data(), s.dt, s.substeps}, known, s.iterations,
-               s.spectralRadius,
+               s.chebyshev,
                {substepStart_.data(), substepVelocity_.data(), velocityFix_.data(), contactStart_.data()}, contacts);
 }
 

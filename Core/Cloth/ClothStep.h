@@ -25,7 +25,7 @@ struct ClothStepSettings {
   float strainTarget = 0.f;  // Simulation.clothStrainTarget: > 0 (with substepTravel), sub-steps from the strain (AdaptiveSubsteps.h)
   bool strainStretchOnly = false;  // Simulation.clothStrainStretchOnly
   int iterations = 1;        // Simulation.clothIterations: constraint rounds per (sub-)step
-  float spectralRadius = 0;  // Simulation.clothSpectralRadius (chebyshev)
+  ChebyshevSchedule chebyshev;  // Simulation.clothSpectralRadius and clothChebyshevDelay
   int contactPasses = 2;     // particle contact passes per (sub-)step
   int crossingGuardRounds = 0;  // rounds of the crossing guard per (sub-)step (CrossingGuard.h)
   float collisionRadiusScale = 1.f;

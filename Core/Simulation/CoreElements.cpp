@@ -310,9 +310,15 @@ void registerCoreElements(ModuleRegistry& r) {
                  0, 100)
         .real("clothSpectralRadius", &S::clothSpectralRadius, "",
               "Cloth.model=chebyshev: the spectral radius rho its Chebyshev weights assume (Wang 2015); "
-              "nearer 1 converges further per iteration, but from 0.8 a hanging sheet never comes to rest "
-              "and from 0.9 large sheets can diverge (Doc/design.md, \"Cloth solver\").",
+              "nearer 1 converges further per iteration. With the weights delayed (clothChebyshevDelay) a "
+              "hanging sheet comes to rest up to 0.97 and keeps moving at 0.99 (Doc/model.md, \"Cloth solvers\").",
               0.0, 0.9999)
+        .integer("clothChebyshevDelay", &S::clothChebyshevDelay,
+                 "Cloth.model=chebyshev: plain Jacobi iterations at the start of each sub-step before the "
+                 "Chebyshev weights (Wang 2015), while the vertices settle onto their tethers, colliders and "
+                 "stretch limits. 0: weights from the first iteration, with which a hanging sheet keeps moving "
+                 "from rho 0.8 (Doc/model.md, \"Cloth solvers\").",
+                 0, 1000)
         .integer("couplingPasses", &S::couplingPasses, "Passes of the water-triangle constraint (Eq. 21) per step.",
                  1, 100)
         .integer("contactPasses", &S::contactPasses, "Passes of cloth self and cloth-cloth contact per step.", 0,

@@ -43,7 +43,8 @@ struct SimulationSettings {
   int clothStrainMaxSubsteps = 0;  // the most sub-steps the strain asks for; 0: kStrainSubstepsFactor x clothSubsteps
   bool clothStrainStretchOnly = false;  // the strain rule counts stretch alone, not compression (AdaptiveSubsteps.h)
   float clothStrainTarget = -1.f;  // > 0, with clothSubstepTravel: sub-steps from the strain left (Cloth/AdaptiveSubsteps.h); < 0: the solver's own
-  float clothSpectralRadius = 0.6f;   // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
+  float clothSpectralRadius = 0.95f;  // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
+  int clothChebyshevDelay = 2;        // plain Jacobi iterations before its Chebyshev weights (ChebyshevSchedule)
   int couplingPasses = 2;      // passes of the water-triangle constraint per step (n_s of Eq. 5 for it)
   int contactPasses = 2;       // passes of cloth contact (self and cloth-cloth) per step
   int crossingGuardRounds = 0; // rounds of the cloth crossing guard per sub-step (Cloth/CrossingGuard.h)

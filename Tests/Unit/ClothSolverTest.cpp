@@ -143,11 +143,11 @@ namespace {
 struct Settling {
   double finalOverPeak = 0.0, worstP99 = 0.0;
 };
-Settling hangFromTwoCorners(double rho, double seconds) {
+Settling hangFromTwoCorners(double rho, int delay, double seconds) {
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
       "<Scene><Simulation clothSubsteps='8' clothIterations='12' clothSpectralRadius='" + std::to_string(rho) +
-          "'/><Cloth model='chebyshev' origin='-0.6 1.9 0' axisU='1 0 0' axisV='0 -1 0' width='1.2' height='1.2' "
+          "' clothChebyshevDelay='" + std::to_string(delay) + "'/><Cloth model='chebyshev' origin='-0.6 1.9 0' axisU='1 0 0' axisV='0 -1 0' width='1.2' height='1.2' "
           "cellsU='39' cellsV='39' pinCorners='u0v0 u1v1'/></Scene>",
       Device::Cpu, reg);
   Settling r;
@@ -166,18 +166,25 @@ Settling hangFromTwoCorners(double rho, double seconds) {
 }
 }  // namespace
 
-TEST(ClothSolvers, ChebyshevHangingSheetComesToRestAtTheDefaultRho) {
-  // The default rho (0.6) leaves the implicit-Euler solve's own damping to
-  // bring the sheet to rest; at 0.95 the Chebyshev extrapolation of an
-  // unconverged iterate feeds the motion and the sheet keeps jittering
-  const Settling settled = hangFromTwoCorners(0.6, 4.0);
-  const Settling jittering = hangFromTwoCorners(0.95, 4.0);
-  std::printf("sheet hung from two corners, 4 s: kinetic energy / peak %.2e at rho 0.6 (strain p99 %.2f %%), "
-              "%.2e at rho 0.95\n",
-              settled.finalOverPeak, 100 * settled.worstP99, jittering.finalOverPeak);
+TEST(ClothSolvers, ChebyshevHangingSheetComesToRestWithTheWeightsDelayed) {
+  // At the default rho (0.95) with the weights delayed two iterations the
+  // implicit-Euler solve's own damping brings the sheet to rest (measured
+  // 2.6e-6 of the peak). Extrapolated from the first iteration, the moves
+  // onto the tethers and stretch limits come back as motion and the sheet
+  // keeps moving (about 7e-2); rho 0.6 comes to rest without the delay but
+  // leaves more strain.
+  const SimulationSettings defaults;
+  const Settling settled = hangFromTwoCorners(defaults.clothSpectralRadius, defaults.clothChebyshevDelay, 4.0);
+  const Settling undelayed = hangFromTwoCorners(defaults.clothSpectralRadius, 0, 4.0);
+  const Settling slow = hangFromTwoCorners(0.6, 0, 4.0);
+  std::printf("sheet hung from two corners, 4 s: kinetic energy / peak %.2e at rho %.2f delayed %d (strain p99 "
+              "%.2f %%), %.2e undelayed; at rho 0.6 %.2e (strain p99 %.2f %%)\n",
+              settled.finalOverPeak, double(defaults.clothSpectralRadius), defaults.clothChebyshevDelay,
+              100 * settled.worstP99, undelayed.finalOverPeak, slow.finalOverPeak, 100 * slow.worstP99);
   EXPECT_LT(settled.finalOverPeak, 1e-4);
-  EXPECT_GT(jittering.finalOverPeak, 10 * settled.finalOverPeak);
+  EXPECT_GT(undelayed.finalOverPeak, 100 * settled.finalOverPeak);
   EXPECT_LT(settled.worstP99, 0.03);
+  EXPECT_LT(settled.worstP99, slow.worstP99);
 }
 
 TEST(ClothSolvers, ChebyshevSheetLandingOnABallStretchesLittle) {
@@ -284,7 +291,7 @@ struct OnBalls {
 OnBalls dropOnBalls(const std::string& sheets) {
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
-      "<Scene><Simulation clothIterations='8' clothSubsteps='4'/>"
+      "<Scene><Simulation clothIterations='8' clothSubsteps='4' clothSubstepTravel='0'/>"
       "<Sphere name='left' center='-0.3 0.3 0' radius='0.08'/><Sphere name='right' center='0.3 0.3 0' "
       "radius='0.08'/>" + sheets + "</Scene>",
       Device::Cpu, reg);

@@ -13,7 +13,7 @@ void runClothSolve(CoreStageState& state, Simulation& sim) {
                   {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothSubstepTravel, set.clothMaxSubsteps,
                    set.clothContactsBySpeed, set.clothStrainMaxSubsteps, set.clothStrainTarget,
                    set.clothStrainStretchOnly,
-                   set.clothIterations, set.clothSpectralRadius,
+                   set.clothIterations, {set.clothSpectralRadius, set.clothChebyshevDelay},
                    set.contactPasses, set.crossingGuardRounds, kCollisionRadiusScale, sim.sizeListsNow()});
 }
 
