@@ -7,16 +7,16 @@
 // - chebyshev and xpbd cloth: kChebyshevSubsteps sub-steps of
 //   kChebyshevIterations Jacobi iterations, more sub-steps when the cloth
 //   moves fast (travel kChebyshevTravel of its thickness per sub-step). On the
-//   README's example (2 s, CPU) this leaves 0.09 % mean / 1.4 % p99 edge
+//   README's example (2 s, CPU) this leaves 0.05 % mean / 0.63 % p99 edge
 //   strain in its worst frame where the paper's PBD at 1 x 8 leaves 0.74 % /
-//   12.7 %, at 1.4 times its CPU step on one thread (the contact passes in as
-//   many sub-steps as the cloth's travel asks for); 2 x 25, as many phases, leaves 2.9 % p99
-//   at 1.6 times (Doc/performance.md, "Default cloth solver").
+//   12.7 % (with the Chebyshev weights at rho 0.6 from the first iteration:
+//   0.09 % / 1.4 %, and 2 x 25, as many phases, 2.9 % p99; Doc/performance.md,
+//   "Default cloth solver").
 //   With the sub-steps left to the solver, it also raises them while the
 //   strain its solve leaves passes kChebyshevStrainTarget at the 99th
-//   percentile (Cloth/AdaptiveSubsteps.h), up to 8 times the fewest: a
-//   sheet hung from one diagonal then leaves 2.85 % p99 where a fixed
-//   4 x 12 leaves 3.6 %. A scene that names its sub-steps keeps them
+//   percentile (Cloth/AdaptiveSubsteps.h), up to 8 times the fewest (at
+//   rho 0.6: a sheet hung from one diagonal then left 2.85 % p99 where a
+//   fixed 4 x 12 left 3.6 %). A scene that names its sub-steps keeps them
 //   (the figure scenes, whose counts are tuned and timed).
 // - pbd only: the paper's 1 x 8, sub-steps fixed (its stiffness is per
 //   iteration, Eq. 5).
