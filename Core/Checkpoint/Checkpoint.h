@@ -28,7 +28,7 @@ struct CheckpointHeader {
   int checkpointEvery = 0;  // the run's --checkpoint-every (a resumed run keeps it)
 };
 
-constexpr std::uint32_t kCheckpointVersion = 6;
+constexpr std::uint32_t kCheckpointVersion = 7;
 // The checkpoint's name inside a run's output folder.
 constexpr const char* kCheckpointFile = "checkpoint.soak";
 

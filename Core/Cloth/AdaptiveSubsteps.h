@@ -19,17 +19,23 @@
 // both on the device, where the sub-steps read it (SubstepClock.h): inside
 // a step graph the host never learns the count (Backend/DeviceLoop.h).
 #include <cmath>
+#include <cstdint>
 
 #include "Base/HostDevice.h"
 #include "Cloth/ClothSystem.h"
+#include "Physics/Collider.h"
 
 namespace soak {
 
+struct SubstepClock;
 // Writes to *maxTravel (device memory) the largest |v| dt / thickness over
 // the cloth's vertices, v the velocity the predict stage left: how many
-// thicknesses the fastest vertex travels in the step. Queued without a
-// wait; `scratch` holds one float per vertex.
-void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* scratch, float* maxTravel);
+// thicknesses the fastest vertex travels in the step. Where `clock` is not
+// null, also marks in clock->kickedColliders the colliders that kick the
+// cloth this step (collidesKick below). Queued without a wait; `scratch`
+// holds one float per vertex.
+void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, const Collider* colliders,
+                        int colliderCount, SubstepClock* clock, float* scratch, float* maxTravel);
 
 // Sub-steps for a travel of `perStep` thicknesses a step: ceil(perStep /
 // travel) within [fewest, max(fewest, most)], the upper bound when perStep
@@ -66,6 +72,19 @@ SOAK_INLINE int substepsForTravel(float perStep, float travel, int fewest, int m
 // same on every backend and run; it is state, saved in checkpoints.
 constexpr int kStrainCalmSteps = 10;
 constexpr float kStrainLoweringMargin = 0.8f;
+// The law is an upper bound: much of a loaded sheet's strain does not
+// shrink with the sub-step (fig3a at fixed counts, 1.5 s: p99 1.90 % at 4
+// sub-steps, 1.47 % at 6, 1.10 % at 9, 1.01 % at 13, about 0.9 % + 16 % /
+// S^2), so by the law alone a count its first frames raised never comes
+// down. After kStrainSteadySteps steps without a raise the rule therefore
+// also lowers where the strain as it is (not scaled) stays under the
+// margin: a probe. A probe that a raise undoes within kStrainProbeSteps
+// doubles the steady spell the next one waits for (up to
+// kStrainMostSteadySteps), so a cloth whose strain does follow the law is
+// raised ever more rarely; one that holds resets the wait.
+constexpr int kStrainSteadySteps = 20;
+constexpr int kStrainMostSteadySteps = 1280;
+constexpr int kStrainProbeSteps = 2 * kStrainCalmSteps;
 // The most sub-steps the strain asks for, in multiples of the fewest. A
 // sheet pinned at its four corners under a water block (the scale scenes)
 // stretches 4.0-4.1 % p99 at 16 sub-steps and 2.9-3.1 % at 32 (H100 whole
@@ -77,7 +96,12 @@ struct StrainSubsteps {
   int substeps = 0;  // the sub-steps the strain asks for (0 before the first step)
   int calmSteps = 0; // steps in a row calm enough to lower them
   int leftBy = 0;    // the sub-steps of the step whose strain the next measurement sees (0 before the first step)
+  int steadySteps = 0;  // steps since the last raise (at most kStrainMostSteadySteps)
+  int steadyWait = kStrainSteadySteps;  // the steady steps a probe waits for
+  int probeAge = -1;    // steps since the last probe lowered the count, -1: none under watch
 };
+// Whether the next lowering may be a probe (the strain as it is under the margin).
+SOAK_INLINE bool strainProbing(StrainSubsteps s) { return s.steadySteps >= s.steadyWait; }
 
 // The count the strain lowers to from `substeps`: a quarter fewer, one at
 // least, not under the fewest.
@@ -91,8 +115,58 @@ SOAK_INLINE int strainLoweredSubsteps(int substeps, int fewest) {
 // to the lowered count. 0 before the first step (nothing is calm).
 SOAK_INLINE float strainCalmBound(StrainSubsteps s, float target, int fewest) {
   if (s.leftBy <= 0 || s.substeps <= 0) return 0.f;
+  if (strainProbing(s)) return kStrainLoweringMargin * target;
   const float r = float(strainLoweredSubsteps(s.substeps, fewest)) / float(s.leftBy);
   return kStrainLoweringMargin * target * r * r;
+}
+
+// A scripted collider's kick.
+//
+// The strain rule answers the strain a step leaves, a step late, and its
+// probes may have lowered the count to what the cloth's weight alone asks
+// for. A scripted collider (`path`) whose velocity changes by dv between
+// two steps accelerates the cloth it holds by |dv| / dt within one step:
+// fig9's ball starting to lift the soaked sheet at 0.2 m/s, in steps of
+// 0.015 s, pulls it with 1.36 g on top of its weight, and the lowered
+// count met that step with 5.6-6.5 % p99 (Doc/performance.md). A solve's
+// leftover strain grows with its load and the square of the sub-step (the
+// h^2 law above), so the step in which a collider within kKickReach of
+// its thickness of a cloth vertex changes velocity takes sqrt(1 + |dv| /
+// (g dt)) times the count the strain asked for (g the scene's gravity,
+// standard gravity where it has none), and the calm and steady spells
+// start again, so that the strain decides when it comes down.
+constexpr float kKickReach = 2.f;
+constexpr float kStandardGravity = 9.81f;
+constexpr int kKickBits = 32;  // colliders from the 32nd on share the last bit of SubstepClock::kickedColliders
+
+SOAK_INLINE bool colliderVelocityChanges(const Collider& c) {
+  return c.velocity.x != c.velocityBefore.x || c.velocity.y != c.velocityBefore.y ||
+         c.velocity.z != c.velocityBefore.z;
+}
+SOAK_INLINE std::uint32_t kickBit(int collider) {
+  return 1u << (collider < kKickBits - 1 ? collider : kKickBits - 1);
+}
+// The largest |dv| of the colliders marked in `bits` (kickBit).
+SOAK_INLINE float kickSpeedChange(const Collider* colliders, int count, std::uint32_t bits) {
+  float most = 0.f;
+  for (int k = 0; bits && k < count; ++k)
+    if (bits & kickBit(k)) {
+      const float dv = length(colliders[k].velocity - colliders[k].velocityBefore);
+      most = dv > most ? dv : most;
+    }
+  return most;
+}
+// The strain's count for a step with a kick of `loadRise` = |dv| / (g dt).
+SOAK_INLINE StrainSubsteps substepsForKick(StrainSubsteps current, float loadRise, int fewest, int most) {
+  const int top = fewest > most ? fewest : most;
+  StrainSubsteps next = current;
+  const int base = current.substeps < fewest ? fewest : current.substeps;
+  const double wanted = ceil(double(base) * sqrt(1.0 + double(loadRise > 0.f ? loadRise : 0.f)));
+  next.substeps = wanted > double(top) ? top : wanted > double(base) ? int(wanted) : base;
+  next.calmSteps = 0;
+  next.steadySteps = 0;
+  next.probeAge = -1;  // a kick's raise is not the strain's verdict on a probe
+  return next;
 }
 
 struct SubstepClock;
@@ -133,11 +207,14 @@ struct SubstepChoice {
   int strainMost = 1;
   int strainEdges = 0;
   bool contactsBySpeed = false;  // Simulation.clothContactsBySpeed
+  const Collider* colliders = nullptr;  // for the kicks the travel's measurement marked
+  int colliderCount = 0;
+  float kickLoadPerSpeed = 0.f;  // 1 / (g dt): a kick's load rise per m/s of dv
 };
 // Writes the step's count to the clock (its substep 0, its total taken up),
 // on the device, from *maxTravel and, where not null, strainCounts[0..1]
-// (measureClothTravel, measureClothStrain); the strain's state is the
-// clock's.
+// (measureClothTravel, measureClothStrain), and the kicks the travel's
+// measurement marked; the strain's state is the clock's.
 void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, const int* strainCounts,
                          SubstepChoice choice);
 
@@ -149,12 +226,23 @@ SOAK_INLINE StrainSubsteps substepsForStrain(StrainSubsteps current, int above, 
   StrainSubsteps next = current;
   next.substeps = current.substeps < fewest ? fewest : current.substeps > top ? top : current.substeps;
   const long long onePercent = (static_cast<long long>(edges) + 99) / 100;  // edges past the 99th percentile
+  if (next.steadySteps < kStrainMostSteadySteps) ++next.steadySteps;
+  if (next.probeAge >= 0 && ++next.probeAge > kStrainProbeSteps) {  // the probe's count held
+    next.probeAge = -1;
+    next.steadyWait = kStrainSteadySteps;
+  }
   if (above > onePercent) {
     const int raise = next.substeps / 2 > 1 ? next.substeps / 2 : 1;
     next.substeps = next.substeps + raise < top ? next.substeps + raise : top;
     next.calmSteps = 0;
+    next.steadySteps = 0;
+    if (next.probeAge >= 0) {  // a probe undone: wait twice as long for the next
+      next.steadyWait = next.steadyWait * 2 < kStrainMostSteadySteps ? next.steadyWait * 2 : kStrainMostSteadySteps;
+      next.probeAge = -1;
+    }
   } else if (aboveCalm < onePercent && next.substeps > fewest) {
     if (++next.calmSteps >= kStrainCalmSteps) {
+      if (strainProbing(current)) next.probeAge = 0;
       next.substeps = strainLoweredSubsteps(next.substeps, fewest);
       next.calmSteps = 0;
     }

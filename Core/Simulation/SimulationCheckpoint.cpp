@@ -58,6 +58,9 @@ void Simulation::saveState(StateWriter& out) const {
   out.put<std::int32_t>(stages_.cloth.strainSubsteps().substeps);  // Cloth/AdaptiveSubsteps.h
   out.put<std::int32_t>(stages_.cloth.strainSubsteps().calmSteps);
   out.put<std::int32_t>(stages_.cloth.strainSubsteps().leftBy);
+  out.put<std::int32_t>(stages_.cloth.strainSubsteps().steadySteps);
+  out.put<std::int32_t>(stages_.cloth.strainSubsteps().steadyWait);
+  out.put<std::int32_t>(stages_.cloth.strainSubsteps().probeAge);
   out.put<std::int32_t>(static_cast<std::int32_t>(modules_.size()));
   for (const auto& m : modules_) {
     const Module& module = *m;
@@ -84,10 +87,18 @@ void Simulation::loadState(StateReader& in) {
   strainSubsteps.substeps = in.get<std::int32_t>();
   strainSubsteps.calmSteps = in.get<std::int32_t>();
   strainSubsteps.leftBy = in.get<std::int32_t>();
+  strainSubsteps.steadySteps = in.get<std::int32_t>();
+  strainSubsteps.steadyWait = in.get<std::int32_t>();
+  strainSubsteps.probeAge = in.get<std::int32_t>();
   if (strainSubsteps.substeps < 0 || strainSubsteps.substeps > 100 || strainSubsteps.calmSteps < 0 ||
-      strainSubsteps.calmSteps > kStrainCalmSteps || strainSubsteps.leftBy < 0 || strainSubsteps.leftBy > 100)
+      strainSubsteps.calmSteps > kStrainCalmSteps || strainSubsteps.leftBy < 0 || strainSubsteps.leftBy > 100 ||
+      strainSubsteps.steadySteps < 0 || strainSubsteps.steadySteps > kStrainMostSteadySteps ||
+      strainSubsteps.steadyWait < kStrainSteadySteps || strainSubsteps.steadyWait > kStrainMostSteadySteps ||
+      strainSubsteps.probeAge < -1 || strainSubsteps.probeAge > kStrainProbeSteps)
     in.fail("cloth sub-steps from the strain (" + std::to_string(strainSubsteps.substeps) + ", calm " +
             std::to_string(strainSubsteps.calmSteps) + ", last step " + std::to_string(strainSubsteps.leftBy) +
+            ", steady " + std::to_string(strainSubsteps.steadySteps) + " of " +
+            std::to_string(strainSubsteps.steadyWait) + ", probe " + std::to_string(strainSubsteps.probeAge) +
             ") out of range");
   const int moduleCount = in.get<std::int32_t>();
   if (moduleCount != int(modules_.size()))

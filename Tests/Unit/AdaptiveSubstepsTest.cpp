@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "Base/Error.h"
 #include "Cloth/AdaptiveSubsteps.h"
@@ -237,26 +238,126 @@ TEST(AdaptiveSubsteps, TheStrainLowersTheCountOnlyWhereTheSquareLawKeepsTheLower
   EXPECT_NEAR(strainCalmBound(s, 0.02f, 4), 0.8f * 0.02f / 4.f, 1e-7f);
   // The lowered count's predicted strain stays under the raising target, so
   // a cloth whose strain follows the law settles instead of swinging: from
-  // 16 sub-steps at 0.4 of the target, lowering stops where the next
-  // lowering would pass 0.8 of it, and is never followed by a raise.
+  // 16 sub-steps at 0.4 of the target, lowering by the law stops where the
+  // next lowering would pass 0.8 of it. The probes after a steady spell
+  // (strain as it is under the margin) then lower it past that count, and
+  // the raise that follows doubles the spell the next probe waits for: over
+  // 3000 steps the cloth is raised a handful of times, each further apart.
   StrainSubsteps r;
   r.substeps = 16;
   const double strainAt16 = 0.4 * 0.02;
-  int raises = 0;
-  for (int step = 0; step < 400; ++step) {
+  std::vector<int> raisedAt;
+  int lowestSettled = 64;
+  for (int step = 0; step < 3000; ++step) {
     const int m = r.substeps;
     const double strain = strainAt16 * (16.0 / m) * (16.0 / m);
     r.leftBy = m;
     const float bound = strainCalmBound(r, 0.02f, 4);
     const StrainSubsteps next = substepsForStrain(r, strain > 0.02 ? 1000 : 0, strain > bound ? 1000 : 0, 1000, 4, 64);
-    raises += next.substeps > r.substeps;
+    if (next.substeps > r.substeps) raisedAt.push_back(step);
+    if (step > 100 && strain < 0.02) lowestSettled = std::min(lowestSettled, m);
     r = next;
   }
-  EXPECT_EQ(raises, 0);
+  ASSERT_GE(raisedAt.size(), 2u);
+  EXPECT_LE(raisedAt.size(), 8u);
+  for (std::size_t k = 2; k < raisedAt.size(); ++k)
+    EXPECT_GT(raisedAt[k] - raisedAt[k - 1], raisedAt[k - 1] - raisedAt[k - 2]) << "raise " << k;
   const double settled = strainAt16 * (16.0 / r.substeps) * (16.0 / r.substeps);
   EXPECT_LT(settled, 0.02);
-  EXPECT_GT(settled, 0.8 * 0.02 * 0.5);  // not lowered needlessly far: one more lowering would pass 0.8 target
   EXPECT_LT(r.substeps, 16);
+  EXPECT_GE(lowestSettled, 12);  // it never holds a count whose strain passes the target
+}
+
+TEST(AdaptiveSubsteps, AProbeLowersACountWhoseStrainHasAFloorTheSquareLawDoesNotSee) {
+  // A loaded sheet's strain shrinks with the sub-step less than the law
+  // says: fig3a at fixed counts holds about 0.9 % + 16 % / S^2 (CPU, 1.5 s).
+  // Raised to 13 by its first frames, by the law alone it stays there (its
+  // 1.0 % predicted at 10 is 1.7 %, over 0.8 of the 2 % target); the probes
+  // bring it down to the fewest, 4, where it holds 1.9 %, without a raise.
+  auto strainAt = [](int m) { return 0.009 + 0.16 / (double(m) * m); };
+  StrainSubsteps byLaw, withProbes;
+  byLaw.substeps = withProbes.substeps = 13;
+  int raises = 0;
+  for (int step = 0; step < 400; ++step) {
+    for (StrainSubsteps* r : {&byLaw, &withProbes}) {
+      const double strain = strainAt(r->substeps);
+      r->leftBy = r->substeps;
+      if (r == &byLaw) r->steadySteps = 0;  // the law alone: never steady long enough to probe
+      const float bound = strainCalmBound(*r, 0.02f, 4);
+      const StrainSubsteps next =
+          substepsForStrain(*r, strain > 0.02 ? 1000 : 0, strain > bound ? 1000 : 0, 1000, 4, 32);
+      if (r == &withProbes) raises += next.substeps > r->substeps;
+      *r = next;
+    }
+  }
+  std::printf("strain with a floor: %d sub-steps by the law alone, %d with the probes (%.2f %%), %d raises\n",
+              byLaw.substeps, withProbes.substeps, 100 * strainAt(withProbes.substeps), raises);
+  EXPECT_EQ(byLaw.substeps, 13);
+  EXPECT_EQ(withProbes.substeps, 4);
+  EXPECT_EQ(raises, 0);
+}
+
+TEST(AdaptiveSubsteps, AKickRaisesTheCountByTheSquareRootOfTheLoadItAdds) {
+  // fig9's lift: 0.2 m/s in a step of 0.015 s is 1.36 g on top of the
+  // weight, sqrt(2.36) = 1.54 times the count, rounded up.
+  StrainSubsteps s;
+  s.substeps = 6;
+  s.calmSteps = 7;
+  s.steadySteps = 300;
+  s.probeAge = 3;
+  const float rise = 0.2f / (9.81f * 0.015f);
+  const StrainSubsteps k = substepsForKick(s, rise, 4, 32);
+  EXPECT_EQ(k.substeps, 10);  // ceil(6 x 1.536)
+  EXPECT_EQ(k.calmSteps, 0);  // the calm and steady spells start again
+  EXPECT_EQ(k.steadySteps, 0);
+  EXPECT_EQ(k.probeAge, -1);           // not a probe undone
+  EXPECT_EQ(k.steadyWait, s.steadyWait);  // so the next probe waits no longer
+  EXPECT_EQ(substepsForKick(s, 100.f, 4, 32).substeps, 32);  // within the most
+  EXPECT_EQ(substepsForKick(s, 0.f, 4, 32).substeps, 6);     // no kick, no raise
+  s.substeps = 0;                                            // before the first step: from the fewest
+  EXPECT_EQ(substepsForKick(s, rise, 4, 32).substeps, 7);
+
+  // Only the marked colliders count, and the largest change of velocity.
+  Collider c[3];
+  c[0].velocity = Vec3(0.f, 0.2f, 0.f);
+  c[1].velocity = Vec3(0.f, 0.f, 0.5f);
+  c[1].velocityBefore = Vec3(0.f, 0.f, -0.5f);
+  c[2].velocity = c[2].velocityBefore = Vec3(3.f, 0.f, 0.f);  // steady: never a kick
+  EXPECT_TRUE(colliderVelocityChanges(c[0]));
+  EXPECT_FALSE(colliderVelocityChanges(c[2]));
+  EXPECT_FLOAT_EQ(kickSpeedChange(c, 3, kickBit(0)), 0.2f);
+  EXPECT_FLOAT_EQ(kickSpeedChange(c, 3, kickBit(0) | kickBit(1)), 1.0f);
+  EXPECT_FLOAT_EQ(kickSpeedChange(c, 3, 0u), 0.f);
+}
+
+TEST(AdaptiveSubsteps, ABallStartingToLiftASheetRaisesTheStepsCountAndOneFarAwayDoesNot) {
+  // A sheet with nothing chosen (the default solver and its strain rule)
+  // lies on a ball. A second ball, 3 m away, starts to rise at 0.3 s, the
+  // one under the sheet at 0.6 s, both at 0.3 m/s: 0.3 / (9.81 x 0.015) =
+  // 2.04 g on top of the weight, sqrt(3.04) = 1.74 times the count, in the
+  // step the near ball starts. The strain rule alone raises by half at most.
+  test::TestRegistry reg;
+  auto sim = test::makeSimulation(
+      "<Scene><Simulation timeStep='0.015'/>"
+      "<Cloth origin='-0.2 0.22 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' height='0.4' cellsU='15' "
+      "cellsV='15'/>"
+      "<Sphere name='ball' center='0 0.1 0' radius='0.1' path='0 0 0 0; 0.6 0 0 0; 1.2 0 0.18 0'/>"
+      "<Sphere name='far' center='3 0.1 0' radius='0.1' path='0 0 0 0; 0.3 0 0 0; 0.9 0 0.18 0'/></Scene>",
+      Device::Cpu, reg);
+  std::vector<int> count(1, 0);
+  for (int s = 1; s <= 50; ++s) {
+    sim->step();
+    count.push_back(sim->lastClothSubsteps());
+  }
+  auto largestRise = [&](int from, int to) {
+    double most = 0.0;
+    for (int s = from; s <= to; ++s) most = std::max(most, double(count[s]) / count[s - 1]);
+    return most;
+  };
+  std::printf("sub-steps around the far ball's start (steps 19-22): %d %d %d %d; the near one's (39-42): %d %d %d %d\n",
+              count[19], count[20], count[21], count[22], count[39], count[40], count[41], count[42]);
+  EXPECT_LE(largestRise(18, 24), 1.5);  // the far ball's start changes nothing
+  EXPECT_GE(largestRise(39, 42), 1.7);  // the near one's raises at once
 }
 
 namespace {
