@@ -4,22 +4,13 @@
 
 #include "Backend/ForEach.h"
 #include "Backend/Primitives.h"
-#include "Base/Atomic.h"
 
 namespace soak {
 
-void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, const Collider* colliders,
-                        int colliderCount, SubstepClock* clock, float* scratch, float* maxTravel) {
+void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* scratch, float* maxTravel) {
   forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
     const int slot = c.vertexSlot[v];
     scratch[v] = length(p.velocity[slot]) * dt / c.thickness[v];
-    if (!clock) return;
-    for (int k = 0; k < colliderCount; ++k) {
-      if (!colliderVelocityChanges(colliders[k])) continue;
-      Vec3 normal;
-      if (colliderDistance(colliders[k], p.position[slot].xyz(), normal) < kKickReach * c.thickness[v])
-        atomicSetBits(&clock->kickedColliders, kickBit(k));
-    }
   }, "cloth.substeps.travel");
   reduceMaxInto(d, scratch, c.vertexCount, maxTravel);
 }
@@ -54,13 +45,9 @@ void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, 
       if (strainCounts) {
         k.strain = substepsForStrain(k.strain, strainCounts[0], strainCounts[1], choice.strainEdges, choice.fewest,
                                      choice.strainMost);
-        const float kick = kickSpeedChange(choice.colliders, choice.colliderCount, k.kickedColliders);
-        if (kick > 0.f)
-          k.strain = substepsForKick(k.strain, kick * choice.kickLoadPerSpeed, choice.fewest, choice.strainMost);
         if (k.strain.substeps > n) n = k.strain.substeps;
       }
     }
-    k.kickedColliders = 0;
     k.substep = 0;
     k.substeps = n;
     k.strain.leftBy = n;

@@ -19,23 +19,17 @@
 // both on the device, where the sub-steps read it (SubstepClock.h): inside
 // a step graph the host never learns the count (Backend/DeviceLoop.h).
 #include <cmath>
-#include <cstdint>
 
 #include "Base/HostDevice.h"
 #include "Cloth/ClothSystem.h"
-#include "Physics/Collider.h"
 
 namespace soak {
 
-struct SubstepClock;
 // Writes to *maxTravel (device memory) the largest |v| dt / thickness over
 // the cloth's vertices, v the velocity the predict stage left: how many
-// thicknesses the fastest vertex travels in the step. Where `clock` is not
-// null, also marks in clock->kickedColliders the colliders that kick the
-// cloth this step (collidesKick below). Queued without a wait; `scratch`
-// holds one float per vertex.
-void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, const Collider* colliders,
-                        int colliderCount, SubstepClock* clock, float* scratch, float* maxTravel);
+// thicknesses the fastest vertex travels in the step. Queued without a
+// wait; `scratch` holds one float per vertex.
+void measureClothTravel(Device d, ParticleView p, ClothView c, float dt, float* scratch, float* maxTravel);
 
 // Sub-steps for a travel of `perStep` thicknesses a step: ceil(perStep /
 // travel) within [fewest, max(fewest, most)], the upper bound when perStep
@@ -83,6 +77,20 @@ constexpr float kStrainLoweringMargin = 0.8f;
 // kStrainMostSteadySteps), so a cloth whose strain does follow the law is
 // raised ever more rarely; one that holds resets the wait.
 constexpr int kStrainSteadySteps = 20;
+// Raising. A raise lowers the strain the solve settles at, and the
+// vertices move there within a few sub-steps: the change of count pulls
+// the cloth, a snap the next measurement sees as more strain. Raised by
+// half each step while past the target, fig9's soaked sheet met the ball's
+// lift at 9 sub-steps and went 9, 13, 19, 32 within four steps at 3.8-5.5 %
+// p99, where one sub-step more a step kept it under 2.5 % (CPU and H100,
+// Doc/performance.md); raising by half only past 1.25 of the target, or
+// only every fifth step, still snapped there (4.9 % and 3.7 %). So a step
+// with more than 1 % of its edges past the target raises the count by
+// one, and by half only where more than kStrainWidePercent % of them are:
+// a load spread over the cloth, as the scale scenes' sheets under a falling
+// block (4.4 % p99 at one a step), where a lift or a landing strains a
+// patch.
+constexpr int kStrainWidePercent = 3;
 constexpr int kStrainMostSteadySteps = 1280;
 constexpr int kStrainProbeSteps = 2 * kStrainCalmSteps;
 // The most sub-steps the strain asks for, in multiples of the fewest. A
@@ -118,55 +126,6 @@ SOAK_INLINE float strainCalmBound(StrainSubsteps s, float target, int fewest) {
   if (strainProbing(s)) return kStrainLoweringMargin * target;
   const float r = float(strainLoweredSubsteps(s.substeps, fewest)) / float(s.leftBy);
   return kStrainLoweringMargin * target * r * r;
-}
-
-// A scripted collider's kick.
-//
-// The strain rule answers the strain a step leaves, a step late, and its
-// probes may have lowered the count to what the cloth's weight alone asks
-// for. A scripted collider (`path`) whose velocity changes by dv between
-// two steps accelerates the cloth it holds by |dv| / dt within one step:
-// fig9's ball starting to lift the soaked sheet at 0.2 m/s, in steps of
-// 0.015 s, pulls it with 1.36 g on top of its weight, and the lowered
-// count met that step with 5.6-6.5 % p99 (Doc/performance.md). A solve's
-// leftover strain grows with its load and the square of the sub-step (the
-// h^2 law above), so the step in which a collider within kKickReach of
-// its thickness of a cloth vertex changes velocity takes sqrt(1 + |dv| /
-// (g dt)) times the count the strain asked for (g the scene's gravity,
-// standard gravity where it has none), and the calm and steady spells
-// start again, so that the strain decides when it comes down.
-constexpr float kKickReach = 2.f;
-constexpr float kStandardGravity = 9.81f;
-constexpr int kKickBits = 32;  // colliders from the 32nd on share the last bit of SubstepClock::kickedColliders
-
-SOAK_INLINE bool colliderVelocityChanges(const Collider& c) {
-  return c.velocity.x != c.velocityBefore.x || c.velocity.y != c.velocityBefore.y ||
-         c.velocity.z != c.velocityBefore.z;
-}
-SOAK_INLINE std::uint32_t kickBit(int collider) {
-  return 1u << (collider < kKickBits - 1 ? collider : kKickBits - 1);
-}
-// The largest |dv| of the colliders marked in `bits` (kickBit).
-SOAK_INLINE float kickSpeedChange(const Collider* colliders, int count, std::uint32_t bits) {
-  float most = 0.f;
-  for (int k = 0; bits && k < count; ++k)
-    if (bits & kickBit(k)) {
-      const float dv = length(colliders[k].velocity - colliders[k].velocityBefore);
-      most = dv > most ? dv : most;
-    }
-  return most;
-}
-// The strain's count for a step with a kick of `loadRise` = |dv| / (g dt).
-SOAK_INLINE StrainSubsteps substepsForKick(StrainSubsteps current, float loadRise, int fewest, int most) {
-  const int top = fewest > most ? fewest : most;
-  StrainSubsteps next = current;
-  const int base = current.substeps < fewest ? fewest : current.substeps;
-  const double wanted = ceil(double(base) * sqrt(1.0 + double(loadRise > 0.f ? loadRise : 0.f)));
-  next.substeps = wanted > double(top) ? top : wanted > double(base) ? int(wanted) : base;
-  next.calmSteps = 0;
-  next.steadySteps = 0;
-  next.probeAge = -1;  // a kick's raise is not the strain's verdict on a probe
-  return next;
 }
 
 struct SubstepClock;
@@ -207,14 +166,11 @@ struct SubstepChoice {
   int strainMost = 1;
   int strainEdges = 0;
   bool contactsBySpeed = false;  // Simulation.clothContactsBySpeed
-  const Collider* colliders = nullptr;  // for the kicks the travel's measurement marked
-  int colliderCount = 0;
-  float kickLoadPerSpeed = 0.f;  // 1 / (g dt): a kick's load rise per m/s of dv
 };
 // Writes the step's count to the clock (its substep 0, its total taken up),
 // on the device, from *maxTravel and, where not null, strainCounts[0..1]
-// (measureClothTravel, measureClothStrain), and the kicks the travel's
-// measurement marked; the strain's state is the clock's.
+// (measureClothTravel, measureClothStrain); the strain's state is the
+// clock's.
 void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, const int* strainCounts,
                          SubstepChoice choice);
 
@@ -232,7 +188,9 @@ SOAK_INLINE StrainSubsteps substepsForStrain(StrainSubsteps current, int above, 
     next.steadyWait = kStrainSteadySteps;
   }
   if (above > onePercent) {
-    const int raise = next.substeps / 2 > 1 ? next.substeps / 2 : 1;
+    const int half = next.substeps / 2 > 1 ? next.substeps / 2 : 1;
+    const long long wide = (static_cast<long long>(edges) * kStrainWidePercent + 99) / 100;
+    const int raise = above > wide ? half : 1;
     next.substeps = next.substeps + raise < top ? next.substeps + raise : top;
     next.calmSteps = 0;
     next.steadySteps = 0;

@@ -26,16 +26,15 @@ void ClothStep::setStrainSubsteps(StrainSubsteps s) {
   clock_.upload({k});
 }
 
-void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
-                              float dt, float strainTarget, int fewest, bool stretchOnly) {
+void ClothStep::measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget, int fewest,
+                              bool stretchOnly) {
   const ClothView c = cloth.view();
   vertexTravel_.resize(std::size_t(c.vertexCount));
   maxTravel_.resize(1);
+  measureClothTravel(device_, p, c, dt, vertexTravel_.data(), maxTravel_.data());
+  travelQueued_ = true;
   const ClothSystem::EdgeList edges = cloth.strainEdges();
   strainQueued_ = strainTarget > 0.f && edges.count > 0;
-  measureClothTravel(device_, p, c, dt, colliders, strainQueued_ ? colliderCount : 0,
-                     strainQueued_ ? clock_.data() : nullptr, vertexTravel_.data(), maxTravel_.data());
-  travelQueued_ = true;
   if (!strainQueued_) return;
   strainFlags_.resize(2 * std::size_t(edges.count));
   strainScan_.resize(2 * std::size_t(edges.count));
@@ -57,7 +56,7 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   // The sub-steps, chosen on the device (AdaptiveSubsteps.h).
   const bool bySpeed = s.substepTravel > 0.f;
   if (bySpeed && !travelQueued_)  // a predict stage that did not
-    measureTravel(p, cloth, colliders, colliderCount, s.dt, s.strainTarget, s.substeps, s.strainStretchOnly);
+    measureTravel(p, cloth, s.dt, s.strainTarget, s.substeps, s.strainStretchOnly);
   SubstepChoice choice;
   choice.fewest = s.substeps;
   choice.travel = bySpeed ? s.substepTravel : 0.f;
@@ -66,10 +65,6 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
       std::min(s.maxSubsteps, s.strainMaxSubsteps > 0 ? s.strainMaxSubsteps : kStrainSubstepsFactor * s.substeps);
   choice.strainEdges = cloth.strainEdges().count;
   choice.contactsBySpeed = s.contactsBySpeed;
-  choice.colliders = colliders;
-  choice.colliderCount = colliderCount;
-  const float g = length(s.gravity) > 0.f ? length(s.gravity) : kStandardGravity;
-  choice.kickLoadPerSpeed = 1.f / (g * s.dt);
   chooseClothSubsteps(device_, clock_.data(), maxTravel_.data(), bySpeed && strainQueued_ ? strainCounts_.data() : nullptr,
                       choice);
   travelQueued_ = strainQueued_ = false;

@@ -43,9 +43,7 @@ class ClothStep {
   // With Simulation.clothStrainTarget as well, the strain the step before
   // left (AdaptiveSubsteps.h); `fewest` is Simulation.clothSubsteps,
   // `stretchOnly` Simulation.clothStrainStretchOnly.
-  // The colliders' kicks are marked where the strain is measured.
-  void measureTravel(ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount, float dt,
-                     float strainTarget, int fewest, bool stretchOnly);
+  void measureTravel(ParticleView p, ClothSystem& cloth, float dt, float strainTarget, int fewest, bool stretchOnly);
   // Chooses the step's sub-steps on the device (SubstepClock.h) and runs
   // them. The host reads the count only where it may be 1 (sub-steps from
   // the speed with Simulation.clothSubsteps 1: one sub-step is the paper's

@@ -4,8 +4,6 @@
 // run as a device loop (Backend/DeviceLoop.h) with no host wait
 // (Doc/design.md, "Step graphs"). Every kernel of a sub-step reads its
 // length and place from here rather than taking them by value.
-#include <cstdint>
-
 #include "Base/HostDevice.h"
 #include "Cloth/AdaptiveSubsteps.h"
 
@@ -18,7 +16,6 @@ struct SubstepClock {
   int contactSubsteps = 0; // of the step's sub-steps, how many run the contact passes (contactsIn)
   int contactsDue = 1;     // 1 while the sub-step under way runs them: the contact kernels' onlyIf
   StrainSubsteps strain;   // what the strain asks for (AdaptiveSubsteps.h): state a checkpoint keeps
-  std::uint32_t kickedColliders = 0;  // the colliders kicking the cloth this step (kickBit); 0 between steps
 };
 
 // What a kernel needs to read the clock: where it is, the step's dt, and

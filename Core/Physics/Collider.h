@@ -17,7 +17,6 @@ struct Collider {
   int inside = 0;     // box/sphere: 1 keeps particles inside (a container)
   Vec3 velocity;      // for moving colliders: surface velocity (friction is relative to it)
   Vec3 displacement;  // for moving colliders: translation from the scene's placement
-  Vec3 velocityBefore;  // for moving colliders: the velocity of the step before (a change is a kick, Cloth/AdaptiveSubsteps.h)
 };
 
 // Signed distance from p to the collider surface, positive in the allowed

@@ -181,13 +181,12 @@ class ColliderModule : public Module {
   void beforeStep(Simulation& sim) override {
     if (path_.size() < 2) return;
     const double dt = sim.settings.timeStep;
-    const Vec3 before = offsetAt(sim.time() - dt), now = offsetAt(sim.time()), next = offsetAt(sim.time() + dt);
+    const Vec3 now = offsetAt(sim.time()), next = offsetAt(sim.time() + dt);
     Collider c = base_;
     if (shape_ != kColliderPlane) c.b = c.b + (shape_ == kColliderBox ? next : Vec3(0.f, 0.f, 0.f));
     c.a = c.a + next;
     c.displacement = next;
     c.velocity = (next - now) / float(dt);
-    c.velocityBefore = (now - before) / float(dt);
     sim.colliders[index_] = c;
     sim.collidersChanged();
   }

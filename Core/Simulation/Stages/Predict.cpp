@@ -10,8 +10,7 @@ void runPredict(CoreStageState& state, Simulation& sim) {
   predictPositions(sim.device(), sim.particles.view(), sim.settings.gravity, float(sim.settings.timeStep));
   // The cloth's travel this step decides its sub-steps (Cloth/AdaptiveSubsteps.h).
   if (!sim.cloth.empty() && sim.settings.clothSubstepTravel > 0.f)
-    state.cloth.measureTravel(sim.particles.view(), sim.cloth, sim.deviceColliders(), int(sim.colliders.size()),
-                              float(sim.settings.timeStep),
+    state.cloth.measureTravel(sim.particles.view(), sim.cloth, float(sim.settings.timeStep),
                               sim.settings.clothStrainTarget, sim.settings.clothSubsteps,
                               sim.settings.clothStrainStretchOnly);
 }
