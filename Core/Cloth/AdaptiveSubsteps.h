@@ -51,7 +51,8 @@ SOAK_INLINE int substepsForTravel(float perStep, float travel, int fewest, int m
 // counts, at its start, the edges the step before left past the target ε,
 // over the edges the stats count (a sheet's warp and weft, a mesh's every
 // edge). More than 1 % past ε (the 99th percentile over it) raises the
-// sub-steps asked for by half at once.
+// sub-steps asked for at once: by one, or by half where the strain is
+// spread over the cloth (kStrainWidePercent below).
 //
 // Lowering follows the same h^2 law: strain left at m sub-steps would be
 // (m / k)^2 times as large at k. Each step also counts the edges whose
@@ -82,14 +83,14 @@ constexpr int kStrainSteadySteps = 20;
 // the cloth, a snap the next measurement sees as more strain. Raised by
 // half each step while past the target, fig9's soaked sheet met the ball's
 // lift at 9 sub-steps and went 9, 13, 19, 32 within four steps at 3.8-5.5 %
-// p99, where one sub-step more a step kept it under 2.5 % (CPU and H100,
-// Doc/performance.md); raising by half only past 1.25 of the target, or
-// only every fifth step, still snapped there (4.9 % and 3.7 %). So a step
-// with more than 1 % of its edges past the target raises the count by
-// one, and by half only where more than kStrainWidePercent % of them are:
-// a load spread over the cloth, as the scale scenes' sheets under a falling
-// block (4.4 % p99 at one a step), where a lift or a landing strains a
-// patch.
+// p99, where one sub-step more a step kept it at 2.5 % (CPU and H100,
+// Doc/performance.md, "The strain rule's probes and raises"); raising by
+// half only past 1.25 of the target, or at most every fifth step, still
+// snapped there (4.9 % and 3.0-3.7 %). So a step with more than 1 % of its
+// edges past the target raises the count by one, and by half only where
+// more than kStrainWidePercent % of them are: a load spread over the cloth,
+// as on the scale scenes' sheets under a falling block (4.4 % p99 at one a
+// step, 3.2 % so), where a lift or a landing strains a patch.
 constexpr int kStrainWidePercent = 3;
 constexpr int kStrainMostSteadySteps = 1280;
 constexpr int kStrainProbeSteps = 2 * kStrainCalmSteps;

@@ -285,12 +285,12 @@ void registerCoreElements(ModuleRegistry& r) {
         .real("clothStrainTarget", &S::clothStrainTarget, "",
               "With clothSubstepTravel > 0: the 99th percentile of edge strain the cloth's sub-steps are raised "
               "to keep under, up to clothStrainMaxSubsteps. Each step counts the edges the step before left past "
-              "it: over 1 % raises the sub-steps by half for the steps after. Strain grows with the square of "
-              "the sub-step, so 10 steps in a row with under 1 % of edges whose strain so scaled to a quarter "
-              "fewer sub-steps passes 0.8 of the target lower them by that quarter (Doc/model.md, \"The default "
-              "cloth solver\"). 0: sub-steps from the speed "
-              "alone. < 0: the solver's own (0.02 where clothSubsteps is left to the solver and no cloth is pbd, "
-              "else 0).",
+              "it: over 1 % raises the sub-steps by one for the steps after, over 3 % by half. Strain grows "
+              "with the square of the sub-step, so 10 steps in a row with under 1 % of edges whose strain so "
+              "scaled to a quarter fewer sub-steps passes 0.8 of the target lower them by that quarter; after 20 "
+              "steps without a raise the strain as it is decides (a probe, Doc/model.md, \"The default cloth "
+              "solver\"). 0: sub-steps from the speed alone. < 0: the solver's own (0.02 where clothSubsteps is "
+              "left to the solver and no cloth is pbd, else 0).",
               -1.0, 1.0)
         .boolean("clothStrainStretchOnly", &S::clothStrainStretchOnly,
                  "With clothStrainTarget > 0: the strain rule counts an edge's stretch alone, not its "
