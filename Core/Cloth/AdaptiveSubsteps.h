@@ -78,6 +78,8 @@ constexpr float kStrainLoweringMargin = 0.8f;
 // kStrainMostSteadySteps), so a cloth whose strain does follow the law is
 // raised ever more rarely; one that holds resets the wait.
 constexpr int kStrainSteadySteps = 20;
+constexpr int kStrainMostSteadySteps = 1280;
+constexpr int kStrainProbeSteps = 2 * kStrainCalmSteps;
 // Raising. A raise lowers the strain the solve settles at, and the
 // vertices move there within a few sub-steps: the change of count pulls
 // the cloth, a snap the next measurement sees as more strain. Raised by
@@ -92,8 +94,6 @@ constexpr int kStrainSteadySteps = 20;
 // as on the scale scenes' sheets under a falling block (4.4 % p99 at one a
 // step, 3.2 % so), where a lift or a landing strains a patch.
 constexpr int kStrainWidePercent = 3;
-constexpr int kStrainMostSteadySteps = 1280;
-constexpr int kStrainProbeSteps = 2 * kStrainCalmSteps;
 // The most sub-steps the strain asks for, in multiples of the fewest. A
 // sheet pinned at its four corners under a water block (the scale scenes)
 // stretches 4.0-4.1 % p99 at 16 sub-steps and 2.9-3.1 % at 32 (H100 whole
