@@ -126,7 +126,18 @@ TEST(StorageFailure, TheOutputFolderRemovedMidRun) {
     kill(pid, SIGKILL);
     FAIL() << "the run ended before it was met";
   }
-  std::filesystem::remove_all(dir);
+  // The run may write a file between remove_all's listing and its last
+  // rmdir ("Directory not empty"), as with `rm -rf` from a shell: remove
+  // again until the folder is gone.
+  std::error_code removeError;
+  for (int tries = 0; tries < 50; ++tries) {
+    std::filesystem::remove_all(dir, removeError);
+    if (!std::filesystem::exists(dir)) break;
+  }
+  if (std::filesystem::exists(dir)) {
+    kill(pid, SIGKILL);
+    FAIL() << "cannot remove " << dir << ": " << removeError.message();
+  }
   const SoakResult r{exitCodeOf(pid), readWholeFile(log)};
   expectCleanFailure(r, dir, "the folder is gone");
   EXPECT_NE(r.output.find("is gone, and the run with it"), std::string::npos) << r.output;
