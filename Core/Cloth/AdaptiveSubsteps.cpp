@@ -44,7 +44,7 @@ void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, 
       n = substepsForTravel(*maxTravel, choice.travel, choice.fewest, choice.most);
       if (strainCounts) {
         k.strain = substepsForStrain(k.strain, strainCounts[0], strainCounts[1], choice.strainEdges, choice.fewest,
-                                     choice.strainMost);
+                                     choice.strainMost, choice.strainFirst);
         if (k.strain.substeps > n) n = k.strain.substeps;
       }
     }

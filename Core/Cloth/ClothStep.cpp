@@ -61,8 +61,9 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   choice.fewest = s.substeps;
   choice.travel = bySpeed ? s.substepTravel : 0.f;
   choice.most = s.maxSubsteps;
-  choice.strainMost =
-      std::min(s.maxSubsteps, s.strainMaxSubsteps > 0 ? s.strainMaxSubsteps : kStrainSubstepsFactor * s.substeps);
+  choice.strainFirst = std::max(s.substeps, s.strainFirstSubsteps);
+  choice.strainMost = std::min(s.maxSubsteps,
+                               s.strainMaxSubsteps > 0 ? s.strainMaxSubsteps : kStrainSubstepsFactor * choice.strainFirst);
   choice.strainEdges = cloth.strainEdges().count;
   choice.contactsBySpeed = s.contactsBySpeed;
   chooseClothSubsteps(device_, clock_.data(), maxTravel_.data(), bySpeed && strainQueued_ ? strainCounts_.data() : nullptr,

@@ -269,8 +269,9 @@ void registerCoreElements(ModuleRegistry& r) {
         .integer("clothSubsteps", &S::clothSubsteps,
                  "Cloth sub-steps per step: gravity, constraints and colliders of the cloth advance in steps "
                  "of timeStep / clothSubsteps (less stretch than the same number of iterations in one step); with "
-                 "clothSubstepTravel > 0, the fewest a step takes. 0: the solver's own (4 for chebyshev and "
-                 "xpbd cloth, 1 for pbd only).",
+                 "clothSubstepTravel > 0, the fewest a step takes. 0: the solver's own (for chebyshev and xpbd "
+                 "cloth 4, and with its strain rule (clothStrainTarget) from 4 at the start down to 2 where the "
+                 "strain stays low; 1 for pbd only).",
                  0, 100)
         .real("clothSubstepTravel", &S::clothSubstepTravel, "",
               "> 0: each step takes as many cloth sub-steps as keep every cloth vertex within this fraction "
@@ -288,8 +289,8 @@ void registerCoreElements(ModuleRegistry& r) {
               "it: over 1 % raises the sub-steps by one for the steps after, over 3 % by half. Strain grows "
               "with the square of the sub-step, so 10 steps in a row with under 1 % of edges whose strain so "
               "scaled to a quarter fewer sub-steps passes 0.8 of the target lower them by that quarter; after 20 "
-              "steps without a raise the strain as it is decides (a probe, Doc/model.md, \"The default cloth "
-              "solver\"). 0: sub-steps from the speed alone. < 0: the solver's own (0.02 where clothSubsteps is "
+              "steps without a raise the strain as it is under 0.9 of the target, and so scaled under 1.5 of "
+              "it, decides (a probe, Doc/model.md, \"The default cloth solver\"). 0: sub-steps from the speed alone. < 0: the solver's own (0.02 where clothSubsteps is "
               "left to the solver and no cloth is pbd, else 0).",
               -1.0, 1.0)
         .boolean("clothStrainStretchOnly", &S::clothStrainStretchOnly,
@@ -305,7 +306,7 @@ void registerCoreElements(ModuleRegistry& r) {
                  "(Doc/model.md, \"Cloth sub-steps\"). false: contact passes in every sub-step.")
         .integer("clothStrainMaxSubsteps", &S::clothStrainMaxSubsteps,
                  "The most cloth sub-steps clothStrainTarget raises a step to, within clothMaxSubsteps. 0: 8 times "
-                 "clothSubsteps (32 for the solver's own 4): a sheet carrying a water block on four pinned corners "
+                 "clothSubsteps (32 for the solver's own counts): a sheet carrying a water block on four pinned corners "
                  "needs 32 (Doc/model.md, \"The default cloth solver\").",
                  0, 100)
         .real("clothSpectralRadius", &S::clothSpectralRadius, "",

@@ -40,7 +40,10 @@ struct SimulationSettings {
   float clothSubstepTravel = -1.f;  // > 0: sub-steps from the cloth's speed (Cloth/AdaptiveSubsteps.h)
   int clothMaxSubsteps = 32;   // the most sub-steps clothSubstepTravel may ask for
   bool clothContactsBySpeed = true;  // contact passes in as many sub-steps as the travel asks for (AdaptiveSubsteps.h)
-  int clothStrainMaxSubsteps = 0;  // the most sub-steps the strain asks for; 0: kStrainSubstepsFactor x clothSubsteps
+  int clothStrainMaxSubsteps = 0;  // the most sub-steps the strain asks for; 0: kStrainSubstepsFactor x the first
+  // Not a parameter: the strain rule's first count where the solver chose
+  // the sub-steps (ClothSolverDefaults.h); 0: clothSubsteps.
+  int clothStrainFirstSubsteps = 0;
   bool clothStrainStretchOnly = false;  // the strain rule counts stretch alone, not compression (AdaptiveSubsteps.h)
   float clothStrainTarget = -1.f;  // > 0, with clothSubstepTravel: sub-steps from the strain left (Cloth/AdaptiveSubsteps.h); < 0: the solver's own
   float clothSpectralRadius = 0.95f;  // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)

@@ -299,6 +299,48 @@ TEST(AdaptiveSubsteps, AProbeLowersACountWhoseStrainHasAFloorTheSquareLawDoesNot
   EXPECT_EQ(raises, 0);
 }
 
+TEST(AdaptiveSubsteps, TheStrainRuleStartsAtItsFirstCountAndLowersAQuietClothToTheFewest) {
+  // The solver's own counts: the rule starts at 4 and may lower to 2.
+  StrainSubsteps s;
+  s = substepsForStrain(s, 0, 0, 1000, 2, 32, 4);
+  EXPECT_EQ(s.substeps, 4);
+  EXPECT_EQ(substepsForStrain(StrainSubsteps{}, 0, 0, 1000, 2, 32, 40).substeps, 32);  // within the most
+  EXPECT_EQ(substepsForStrain(StrainSubsteps{}, 0, 0, 1000, 4, 32, 0).substeps, 4);    // 0: the fewest
+  // A hanging sheet whose strain follows the law from 0.4 % at 4 sub-steps
+  // (1.6 % at 2; fig1's sheet: 0.5 % at 4, 0.6-1.2 % at 2) comes down to 2
+  // and stays.
+  int raises = 0;
+  for (int step = 0; step < 400; ++step) {
+    const double strain = 0.004 * (4.0 / s.substeps) * (4.0 / s.substeps);
+    s.leftBy = s.substeps;
+    const float bound = strainCalmBound(s, 0.02f, 2);
+    const StrainSubsteps next =
+        substepsForStrain(s, strain > 0.02 ? 1000 : 0, strain > bound ? 1000 : 0, 1000, 2, 32, 4);
+    raises += next.substeps > s.substeps;
+    s = next;
+  }
+  EXPECT_EQ(s.substeps, 2);
+  EXPECT_EQ(raises, 0);
+}
+
+TEST(AdaptiveSubsteps, AProbeKeepsTheStrainTheLawPredictsUnderHalfAgainTheTarget) {
+  StrainSubsteps s;
+  s.steadySteps = s.steadyWait;  // probing
+  s.substeps = s.leftBy = 5;      // lowered to 4: the law scales by 0.64, and the strain as it is decides
+  EXPECT_NEAR(strainCalmBound(s, 0.02f, 2), kStrainProbeMargin * 0.02f, 1e-7f);
+  s.substeps = s.leftBy = 3;  // lowered to 2: the law scales by 4 / 9 and decides
+  EXPECT_NEAR(strainCalmBound(s, 0.02f, 2), kStrainProbeLawMargin * 0.02f * 4.f / 9.f, 1e-7f);
+  // A cloth whose strain follows the law, 1.5 % at 3 sub-steps (3.4 % at
+  // 2): under 0.9 of the target as it is, but no probe takes it to 2.
+  for (int step = 0; step < 400; ++step) {
+    const double strain = 0.015 * (3.0 / s.substeps) * (3.0 / s.substeps);
+    s.leftBy = s.substeps;
+    const float bound = strainCalmBound(s, 0.02f, 2);
+    s = substepsForStrain(s, strain > 0.02 ? 1000 : 0, strain > bound ? 1000 : 0, 1000, 2, 32, 4);
+    ASSERT_EQ(s.substeps, 3) << "step " << step;
+  }
+}
+
 namespace {
 // The diagonal-hung sheet of ClothSystem.ASheetWithNothingChosen... (40 x
 // 40, 1.2 m, pinned at two opposite corners, the default solver) for
