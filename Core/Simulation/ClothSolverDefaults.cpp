@@ -11,7 +11,6 @@ void resolveClothSolverCounts(SimulationSettings& s, const ClothModelsUsed& used
     // The rule starts at the chebyshev count and may lower it to the fewest.
     s.clothSubsteps = kChebyshevFewestSubsteps;
     s.clothStrainFirstSubsteps = kChebyshevSubsteps;
-    if (s.clothStrainMaxSubsteps <= 0) s.clothStrainMaxSubsteps = kChebyshevStrainMaxSubsteps;
   } else if (solversSubsteps) {
     s.clothSubsteps = pbdCounts ? kPbdSubsteps : kChebyshevSubsteps;
   }

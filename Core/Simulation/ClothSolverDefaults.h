@@ -14,9 +14,9 @@
 //   "Default cloth solver").
 //   With the sub-steps left to the solver, it also raises them while the
 //   strain its solve leaves passes kChebyshevStrainTarget at the 99th
-//   percentile (Cloth/AdaptiveSubsteps.h), up to kChebyshevStrainMaxSubsteps
-//   (at rho 0.6: a sheet hung from one diagonal then left 2.85 % p99 where
-//   a fixed 4 x 12 left 3.6 %), and lowers them where the strain stays low
+//   percentile (Cloth/AdaptiveSubsteps.h), up to kStrainSubstepsFactor
+//   times its first count, 32 (at rho 0.6: a sheet hung from one diagonal
+//   then left 2.85 % p99 where a fixed 4 x 12 left 3.6 %), and lowers them where the strain stays low
 //   down to kChebyshevFewestSubsteps: the rule starts at 4, so a sheet's
 //   first fall is solved as finely as a fixed 4 x 12 (from 2, fig7's and
 //   fig3a's worst frames, in their first 0.15 s, were 2.92 % and 2.78 %
@@ -36,7 +36,6 @@ namespace soak {
 
 constexpr int kChebyshevSubsteps = 4;          // fixed, or the strain rule's first count
 constexpr int kChebyshevFewestSubsteps = 2;    // the fewest the strain rule lowers to
-constexpr int kChebyshevStrainMaxSubsteps = 32;
 constexpr int kChebyshevIterations = 12;
 constexpr float kChebyshevTravel = 0.5f;
 constexpr float kChebyshevStrainTarget = 0.02f;

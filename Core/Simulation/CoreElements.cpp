@@ -306,7 +306,7 @@ void registerCoreElements(ModuleRegistry& r) {
                  "(Doc/model.md, \"Cloth sub-steps\"). false: contact passes in every sub-step.")
         .integer("clothStrainMaxSubsteps", &S::clothStrainMaxSubsteps,
                  "The most cloth sub-steps clothStrainTarget raises a step to, within clothMaxSubsteps. 0: 8 times "
-                 "clothSubsteps (32 for the solver's own counts): a sheet carrying a water block on four pinned corners "
+                 "the count the rule starts from, clothSubsteps (32 for the solver's own counts, which start at 4): a sheet carrying a water block on four pinned corners "
                  "needs 32 (Doc/model.md, \"The default cloth solver\").",
                  0, 100)
         .real("clothSpectralRadius", &S::clothSpectralRadius, "",

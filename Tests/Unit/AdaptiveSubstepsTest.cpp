@@ -342,15 +342,15 @@ TEST(AdaptiveSubsteps, AProbeKeepsTheStrainTheLawPredictsUnderHalfAgainTheTarget
 }
 
 namespace {
-// The diagonal-hung sheet of ClothSystem.ASheetWithNothingChosen... (40 x
-// 40, 1.2 m, pinned at two opposite corners, the default solver) for
-// `seconds`: its worst per-frame stretch and two-sided p99, the most
-// sub-steps a step took and the last step's. `pins` hangs it otherwise.
+// The sheet of ClothSystem.ASheetWithNothingChosen... (40 x 40, 1.2 m,
+// the default solver) hung by `pins` (by default two opposite corners,
+// a diagonal) for `seconds`: its worst per-frame stretch and two-sided
+// p99, the most sub-steps a step took and the last step's.
 struct Hung {
   double worstStretchP99 = 0.0, worstP99 = 0.0, meanSubsteps = 0.0;
   int mostSubsteps = 0, lastSubsteps = 0;
 };
-Hung hangByADiagonal(const std::string& simulationAttributes, double seconds,
+Hung hangSheet(const std::string& simulationAttributes, double seconds,
                      const std::string& pins = "u0v0 u1v1") {
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
@@ -379,8 +379,8 @@ TEST(AdaptiveSubsteps, TheStrainRuleOnStretchAloneLeavesTheWrinklesOfAHangingShe
   // rule counting both sides raises the count for them where the target is
   // under that (1 % here). Counting stretch alone (clothStrainStretchOnly)
   // keeps the fewest, and the stretch stays far under the target either way.
-  const Hung both = hangByADiagonal("clothStrainTarget='0.01'", 1.5);
-  const Hung stretch = hangByADiagonal("clothStrainTarget='0.01' clothStrainStretchOnly='true'", 1.5);
+  const Hung both = hangSheet("clothStrainTarget='0.01'", 1.5);
+  const Hung stretch = hangSheet("clothStrainTarget='0.01' clothStrainStretchOnly='true'", 1.5);
   std::printf("sheet hung by a diagonal, 1.5 s: strain rule on both sides: %.2f sub-steps a step (at most %d), "
               "p99 %.2f %%, stretch p99 %.2f %%; on stretch alone: %.2f (at most %d), p99 %.2f %%, stretch %.2f %%\n",
               both.meanSubsteps, both.mostSubsteps, 100 * both.worstP99, 100 * both.worstStretchP99,
@@ -397,7 +397,7 @@ TEST(AdaptiveSubsteps, ASheetHungByAnEdgeComesDownToTheFewestSubstepsAndHoldsIts
   // sheet whose strain stays low comes down to the 2 x 12 fig1 names
   // (Doc/model.md, "The default cloth solver"); its strain at 2 stays
   // under the 2 % target, so nothing raises it again.
-  const Hung edge = hangByADiagonal("", 3.0, "u0v0 u1v0");
+  const Hung edge = hangSheet("", 3.0, "u0v0 u1v0");
   std::printf("sheet hung by an edge, 3 s: %.2f sub-steps a step (at most %d, the last %d), p99 %.2f %%\n",
               edge.meanSubsteps, edge.mostSubsteps, edge.lastSubsteps, 100 * edge.worstP99);
   EXPECT_EQ(edge.mostSubsteps, 4);
