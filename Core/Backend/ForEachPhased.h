@@ -7,19 +7,19 @@
 //
 // On the CPU each phase is an OpenMP loop, as forEach would run it. On the
 // GPU the whole list is one cooperative kernel with a grid-wide barrier
-// between phases (phaseBarrier), instead of one launch per phase: a cloth solve of 4
+// between phases, instead of one launch per phase: a cloth solve of 4
 // sub-steps x 10 iterations x 27 colours was 1080 launches of about 6 us
 // each, most of it launch and tail (Doc/performance.md). Where a cooperative
 // launch is refused, it falls back to one launch per phase. The order of the
 // work within a phase is free, as in forEach; between phases it is fixed, so
 // results are the same either way.
 #include <algorithm>
-#include <atomic>
 
 #include "Backend/ForEach.h"
 #include "Base/Lanes.h"
 
 #if defined(__CUDACC__)
+#include <cooperative_groups.h>
 #include <cuda_runtime.h>
 #endif
 
@@ -47,61 +47,21 @@ struct PhaseList {
 };
 
 #if defined(__CUDACC__)
-// The grid-wide barrier between phases. cooperative_groups' grid.sync()
-// polls its arrival word with acquire loads, and on sm_90 each acquire
-// load empties the SM's L1 (LD.STRONG.GPU then CCTL.IVALL, Doc/performance.md
-// "The Jacobi phase under Nsight Compute"): a block that arrives early
-// keeps emptying the L1 under the blocks of its SM that are still working
-// on the phase. This barrier polls with relaxed loads and acquires once,
-// by a fence after the word has flipped, which is the same synchronisation
-// in the PTX memory model (a release by every block's arrival, observed by
-// a relaxed load, then a fence).
-//
-// The word counts arrivals as grid.sync()'s does: block 0 adds
-// 2^31 - (blocks - 1), the others 1, so each barrier flips the top bit and
-// leaves the low bits as they were, ready for the next barrier or launch.
-__device__ __forceinline__ void phaseBarrier(unsigned* word) {
-  __syncthreads();
-  if (threadIdx.x == 0) {
-    const unsigned add = blockIdx.x == 0 ? 0x80000000u - (gridDim.x - 1u) : 1u;
-    unsigned before = 0, now = 0;
-    asm volatile("atom.add.release.gpu.u32 %0, [%1], %2;" : "=r"(before) : "l"(word), "r"(add) : "memory");
-    do {
-      asm volatile("ld.relaxed.gpu.u32 %0, [%1];" : "=r"(now) : "l"(word) : "memory");
-    } while (((before ^ now) & 0x80000000u) == 0u);
-    asm volatile("fence.acq_rel.gpu;" ::: "memory");
-  }
-  __syncthreads();
-}
-
-// The barrier words: one for each host thread that launches phased kernels
-// (a thread's launches are ordered on its own default stream, so one word
-// serves them all), up to kBarrierThreads threads at once. Static device
-// memory, zero at load, so a launch inside a graph capture needs no
-// allocation; each translation unit has its own.
-constexpr int kBarrierThreads = 64;
-static __device__ unsigned gPhaseBarrier[kBarrierThreads];
-inline int phaseBarrierSlot() {
-  static std::atomic<int> next{0};
-  thread_local const int slot = next.fetch_add(1) % kBarrierThreads;
-  return slot;
-}
-
 template <class F>
-__global__ void soakPhasedKernel(PhaseList phases, int barrierSlot, F f) {
-  unsigned* barrier = gPhaseBarrier + barrierSlot;
+__global__ void soakPhasedKernel(PhaseList phases, F f) {
+  cooperative_groups::grid_group grid = cooperative_groups::this_grid();
   const int first = blockIdx.x * blockDim.x + threadIdx.x, stride = gridDim.x * blockDim.x;
   for (int r = 0; r < phases.repeat; ++r)
     for (int p = 0; p < phases.count; ++p) {
       for (int k = phases.start[p] + first; k < phases.start[p + 1]; k += stride) f(k);
-      phaseBarrier(barrier);
+      grid.sync();
     }
 }
 // The same with a group of 2^shift lanes per item (Base/Lanes.h): the
 // group's lanes take the same k, so they stay together through the loops.
 template <class F>
-__global__ void soakPhasedLanesKernel(PhaseList phases, int shift, int barrierSlot, F f) {
-  unsigned* barrier = gPhaseBarrier + barrierSlot;
+__global__ void soakPhasedLanesKernel(PhaseList phases, int shift, F f) {
+  cooperative_groups::grid_group grid = cooperative_groups::this_grid();
   const int t = blockIdx.x * blockDim.x + threadIdx.x;
   const int first = t >> shift, stride = (gridDim.x * blockDim.x) >> shift;
   Lanes l;
@@ -111,7 +71,7 @@ __global__ void soakPhasedLanesKernel(PhaseList phases, int shift, int barrierSl
   for (int r = 0; r < phases.repeat; ++r)
     for (int p = 0; p < phases.count; ++p) {
       for (int k = phases.start[p] + first; k < phases.start[p + 1]; k += stride) f(k, l);
-      phaseBarrier(barrier);
+      grid.sync();
     }
 }
 
@@ -159,8 +119,7 @@ void forEachPhased(Device device, const PhaseList& phases, F f, const char* what
     if (widest == 0) return;
     static int maxBlocks = coResidentBlocks(soakPhasedKernel<F>);
     PhaseList list = phases;
-    int barrier = phaseBarrierSlot();
-    void* args[] = {static_cast<void*>(&list), static_cast<void*>(&barrier), static_cast<void*>(&f)};
+    void* args[] = {static_cast<void*>(&list), static_cast<void*>(&f)};
     if (launchCooperative(soakPhasedKernel<F>, widest, maxBlocks, args, device, what)) return;
 #endif
   }
@@ -198,9 +157,7 @@ void forEachPhasedLanes(Device device, const PhaseList& phases, int lanes, F f, 
     while ((1 << shift) < lanes && shift < 5) ++shift;
     static int maxBlocks = coResidentBlocks(soakPhasedLanesKernel<F>);
     PhaseList list = phases;
-    int barrier = phaseBarrierSlot();
-    void* args[] = {static_cast<void*>(&list), static_cast<void*>(&shift), static_cast<void*>(&barrier),
-                    static_cast<void*>(&f)};
+    void* args[] = {static_cast<void*>(&list), static_cast<void*>(&shift), static_cast<void*>(&f)};
     if (launchCooperative(soakPhasedLanesKernel<F>, static_cast<long long>(widest) << shift, maxBlocks, args, device,
                           what))
       return;
