@@ -62,8 +62,8 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   choice.travel = bySpeed ? s.substepTravel : 0.f;
   choice.most = s.maxSubsteps;
   choice.strainFirst = std::max(s.substeps, s.strainFirstSubsteps);
-  choice.strainMost = std::min(s.maxSubsteps,
-                               s.strainMaxSubsteps > 0 ? s.strainMaxSubsteps : kStrainSubstepsFactor * choice.strainFirst);
+  const int strainMost = s.strainMaxSubsteps > 0 ? s.strainMaxSubsteps : kStrainSubstepsFactor * choice.strainFirst;
+  choice.strainMost = std::min(s.maxSubsteps, strainMost);
   choice.strainEdges = cloth.strainEdges().count;
   choice.contactsBySpeed = s.contactsBySpeed;
   chooseClothSubsteps(device_, clock_.data(), maxTravel_.data(), bySpeed && strainQueued_ ? strainCounts_.data() : nullptr,

@@ -21,7 +21,7 @@ struct ClothStepSettings {
   float substepTravel = 0.f; // Simulation.clothSubstepTravel: > 0, sub-steps from the speed (AdaptiveSubsteps.h)
   int maxSubsteps = 1;       // Simulation.clothMaxSubsteps
   bool contactsBySpeed = false;  // Simulation.clothContactsBySpeed
-  int strainMaxSubsteps = 0; // Simulation.clothStrainMaxSubsteps: the strain's most; 0: kStrainSubstepsFactor x the first
+  int strainMaxSubsteps = 0; // Simulation.clothStrainMaxSubsteps: the strain's most; 0: kStrainSubstepsFactor x first
   int strainFirstSubsteps = 0;  // the strain rule's count before it has measured (0: substeps; ClothSolverDefaults.h)
   float strainTarget = 0.f;  // Simulation.clothStrainTarget: > 0 (with substepTravel), sub-steps from the strain (AdaptiveSubsteps.h)
   bool strainStretchOnly = false;  // Simulation.clothStrainStretchOnly

@@ -16,8 +16,9 @@
 //   strain its solve leaves passes kChebyshevStrainTarget at the 99th
 //   percentile (Cloth/AdaptiveSubsteps.h), up to kStrainSubstepsFactor
 //   times its first count, 32 (at rho 0.6: a sheet hung from one diagonal
-//   then left 2.85 % p99 where a fixed 4 x 12 left 3.6 %), and lowers them where the strain stays low
-//   down to kChebyshevFewestSubsteps: the rule starts at 4, so a sheet's
+//   then left 2.85 % p99 where a fixed 4 x 12 left 3.6 %), and lowers
+//   them where the strain stays low down to kChebyshevFewestSubsteps: the
+//   rule starts at 4, so a sheet's
 //   first fall is solved as finely as a fixed 4 x 12 (from 2, fig7's and
 //   fig3a's worst frames, in their first 0.15 s, were 2.92 % and 2.78 %
 //   p99 against 2.53 % and 2.41 %), and a sheet that hangs quietly comes

@@ -290,8 +290,9 @@ void registerCoreElements(ModuleRegistry& r) {
               "with the square of the sub-step, so 10 steps in a row with under 1 % of edges whose strain so "
               "scaled to a quarter fewer sub-steps passes 0.8 of the target lower them by that quarter; after 20 "
               "steps without a raise the strain as it is under 0.9 of the target, and so scaled under 1.5 of "
-              "it, decides (a probe, Doc/model.md, \"The default cloth solver\"). 0: sub-steps from the speed alone. < 0: the solver's own (0.02 where clothSubsteps is "
-              "left to the solver and no cloth is pbd, else 0).",
+              "it, decides (a probe, Doc/model.md, \"The default cloth solver\"). 0: sub-steps from the speed "
+              "alone. < 0: the solver's own (0.02 where clothSubsteps is left to the solver and no cloth is pbd, "
+              "else 0).",
               -1.0, 1.0)
         .boolean("clothStrainStretchOnly", &S::clothStrainStretchOnly,
                  "With clothStrainTarget > 0: the strain rule counts an edge's stretch alone, not its "
@@ -306,8 +307,9 @@ void registerCoreElements(ModuleRegistry& r) {
                  "(Doc/model.md, \"Cloth sub-steps\"). false: contact passes in every sub-step.")
         .integer("clothStrainMaxSubsteps", &S::clothStrainMaxSubsteps,
                  "The most cloth sub-steps clothStrainTarget raises a step to, within clothMaxSubsteps. 0: 8 times "
-                 "the count the rule starts from, clothSubsteps (32 for the solver's own counts, which start at 4): a sheet carrying a water block on four pinned corners "
-                 "needs 32 (Doc/model.md, \"The default cloth solver\").",
+                 "the count the rule starts from, clothSubsteps (32 for the solver's own counts, which start at "
+                 "4): a sheet carrying a water block on four pinned corners needs 32 (Doc/model.md, \"The "
+                 "default cloth solver\").",
                  0, 100)
         .real("clothSpectralRadius", &S::clothSpectralRadius, "",
               "Cloth.model=chebyshev: the spectral radius rho its Chebyshev weights assume (Wang 2015); "

@@ -350,8 +350,7 @@ struct Hung {
   double worstStretchP99 = 0.0, worstP99 = 0.0, meanSubsteps = 0.0;
   int mostSubsteps = 0, lastSubsteps = 0;
 };
-Hung hangSheet(const std::string& simulationAttributes, double seconds,
-                     const std::string& pins = "u0v0 u1v1") {
+Hung hangSheet(const std::string& simulationAttributes, double seconds, const std::string& pins = "u0v0 u1v1") {
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
       "<Scene><Simulation " + simulationAttributes +

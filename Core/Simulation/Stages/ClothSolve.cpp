@@ -12,9 +12,8 @@ void runClothSolve(CoreStageState& state, Simulation& sim) {
   state.cloth.run(sim.particles.view(), sim.cloth, sim.deviceColliders(), int(sim.colliders.size()),
                   {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothSubstepTravel, set.clothMaxSubsteps,
                    set.clothContactsBySpeed, set.clothStrainMaxSubsteps, set.clothStrainFirstSubsteps,
-                   set.clothStrainTarget,
-                   set.clothStrainStretchOnly,
-                   set.clothIterations, {set.clothSpectralRadius, set.clothChebyshevDelay},
+                   set.clothStrainTarget, set.clothStrainStretchOnly, set.clothIterations,
+                   {set.clothSpectralRadius, set.clothChebyshevDelay},
                    set.contactPasses, set.crossingGuardRounds, kCollisionRadiusScale, sim.sizeListsNow()});
 }
 
