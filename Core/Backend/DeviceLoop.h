@@ -12,6 +12,9 @@
 // the first starts: the work that writes *count sets it) for the body's
 // kernels to read, and advances after each round. *count must be at least
 // 1: a loop node runs its body once before it reads the condition.
+// countMayChange: the body may set *index and *count back (a redo of the
+// rounds, Cloth/StrainRedo.h); where the host queues the rounds it then
+// reads both again after the last it knew of (a wait on the GPU).
 // The body may only queue work on the device: a host wait, an allocation
 // or a copy to the host inside a loop node is a logic_error.
 #include "Backend/Device.h"
@@ -21,7 +24,7 @@ namespace soak {
 // Returns the rounds where the host read them, -1 where they stayed on the
 // device.
 template <class Body>
-int repeatOnDevice(Device d, int* index, const int* count, int known, Body&& body) {
+int repeatOnDevice(Device d, int* index, const int* count, int known, Body&& body, bool countMayChange = false) {
   if (beginDeviceLoop(d)) {
     body();
     advanceDeviceLoop(d, index, count);
@@ -33,6 +36,12 @@ int repeatOnDevice(Device d, int* index, const int* count, int known, Body&& bod
   for (int r = 0; r < rounds; ++r) {
     body();
     advanceDeviceLoop(d, index, count);
+    if (countMayChange && r + 1 == rounds) {
+      int at = 0, now = 0;
+      copyDeviceToHost(d, &at, index, sizeof(int));
+      copyDeviceToHost(d, &now, count, sizeof(int));
+      rounds = r + 1 + (now > at ? now - at : 0);
+    }
   }
   return rounds;
 }

@@ -50,6 +50,8 @@ void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, 
     }
     k.substep = 0;
     k.substeps = n;
+    k.attempt = 0;
+    k.redoPast = 0;
     k.strain.leftBy = n;
     k.contactSubsteps = choice.travel > 0.f && choice.contactsBySpeed
                             ? contactSubstepsForTravel(*maxTravel, choice.travel, n)

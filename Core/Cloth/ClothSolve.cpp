@@ -131,6 +131,11 @@ void runSubstep(const Substep& a) {
     if (t.index() > 0) {
       endSubstep(p, s, i, h);  // the sub-step before this one ends here
       if (t.contactsIn(t.index() - 1)) s.contactStart[i] = s.start[i];
+    } else if (t.clock->attempt > 0) {
+      // A redo (StrainRedo.h): the step's sub-steps again from its start.
+      s.start[i] = p.position[i];
+      s.contactStart[i] = p.position[i];
+      s.velocity[i] = s.firstVelocity[i];
     }
     const Float4 x = p.position[i];
     if (x.w == 0.f) {
@@ -177,7 +182,7 @@ void runSubstep(const Substep& a) {
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, SubstepTime t, int knownSubsteps,
                   int iterations, ChebyshevSchedule chebyshev, ClothSubstepScratch s,
-                  const ClothContactPasses& contacts) {
+                  const ClothContactPasses& contacts, const SubstepCheck& check) {
   const ClothView c = cloth.view();
   const float dt = t.dt;
   const bool oneSubstep = knownSubsteps == 1;
@@ -199,16 +204,20 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
       const int i = c.vertexSlot[v];
       const Vec3 x = p.position[i].xyz();
       s.velocity[i] = (p.predicted[i].xyz() - x) * (1.f / dt) - gravity * dt;
+      if (s.firstVelocity) s.firstVelocity[i] = s.velocity[i];
     }, "cloth.substep.begin");
   }
   const Substep one{d, p, substepView, &cloth, colliders, colliderCount, collisionRadiusScale, gravity, t,
                     oneSubstep, iterations, chebyshev, s, &contacts};
-  auto substep = [&one] { runSubstep(one); };
+  auto substep = [&one, &check] {
+    runSubstep(one);
+    if (check) check();
+  };
   if (oneSubstep) {
-    substep();
+    runSubstep(one);
     return;
   }
-  repeatOnDevice(d, &t.clock->substep, &t.clock->substeps, knownSubsteps, substep);
+  repeatOnDevice(d, &t.clock->substep, &t.clock->substeps, knownSubsteps, substep, bool(check));
   forEach(d, c.vertexCount, SOAK_LAMBDA(int v) {
     const int i = c.vertexSlot[v];
     endSubstep(p, s, i, t.h());

@@ -42,7 +42,14 @@ struct ClothSubstepScratch {
   Vec3* velocity = nullptr;     // velocity through the sub-steps
   Vec3* velocityFix = nullptr;  // out: end velocity minus (x* - x) / dt; 0 for non-cloth particles
   Float4* contactStart = nullptr;  // the place at the end of the last sub-step that ran the contact passes
+  // The velocity the step's first sub-step starts from, kept for a redo of
+  // the step's sub-steps (StrainRedo.h); null where no redo can come.
+  Vec3* firstVelocity = nullptr;
 };
+
+// Work queued after each sub-step, inside the sub-step loop (the strain
+// redo's check, StrainRedo.h); empty for none.
+using SubstepCheck = std::function<void()>;
 
 // The cloth part of one step in the clock's sub-steps of h = dt / count
 // (Macklin et al. 2019, "Small steps in physics simulation"): each sub-step
@@ -64,10 +71,12 @@ struct ClothSubstepScratch {
 // The count is the clock's (SubstepClock.h; written on the device, its
 // `substep` 0): the sub-steps run as a device loop (Backend/DeviceLoop.h),
 // so on the GPU the host need not know it. knownSubsteps: the count where
-// the host knows it, else 0; 1 is the paper's single pass.
+// the host knows it, else 0; 1 is the paper's single pass. With
+// scratch.firstVelocity and a check that may set the clock back (a redo,
+// StrainRedo.h), the sub-steps run again from the step's start.
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, SubstepTime t, int knownSubsteps,
                   int iterations, ChebyshevSchedule chebyshev, ClothSubstepScratch scratch,
-                  const ClothContactPasses& contacts);
+                  const ClothContactPasses& contacts, const SubstepCheck& check = {});
 
 }  // namespace soak

@@ -11,7 +11,7 @@ namespace soak {
 
 ClothStep::ClothStep(Device d)
     : device_(d), contactScratch_(d), contactLists_(d), crossingFlag_(d), substepStart_(d), contactStart_(d),
-      substepVelocity_(d), velocityFix_(d), clock_(d), vertexTravel_(d), maxTravel_(d), strainFlags_(d),
+      substepVelocity_(d), velocityFix_(d), firstVelocity_(d), clock_(d), vertexTravel_(d), maxTravel_(d), strainFlags_(d),
       strainScan_(d), strainCounts_(d) {
   clock_.upload({SubstepClock{}});
 }
@@ -66,8 +66,8 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
   choice.strainMost = std::min(s.maxSubsteps, strainMost);
   choice.strainEdges = cloth.strainEdges().count;
   choice.contactsBySpeed = s.contactsBySpeed;
-  chooseClothSubsteps(device_, clock_.data(), maxTravel_.data(), bySpeed && strainQueued_ ? strainCounts_.data() : nullptr,
-                      choice);
+  const bool strainRule = bySpeed && strainQueued_;
+  chooseClothSubsteps(device_, clock_.data(), maxTravel_.data(), strainRule ? strainCounts_.data() : nullptr, choice);
   travelQueued_ = strainQueued_ = false;
   phasesPerSubstep_ = cloth.constraintPhasesPerStep(s.iterations, 1);
   // The count where the host knows it. One sub-step is the paper's single
@@ -91,10 +91,22 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
     substepVelocity_.resize(p.count);
     velocityFix_.resize(p.count);
   }
+  // The strain redo (StrainRedo.h), where the strain rule chooses the count.
+  const bool redo = substepped_ && strainRule && s.strainRedo > 0.f;
+  SubstepCheck check;
+  if (redo) {
+    firstVelocity_.resize(p.count);
+    const ClothSystem::EdgeList edges = cloth.strainEdges();
+    const StrainRedoCheck bound{edges.edges, edges.rest, edges.count, s.strainRedo * s.strainTarget,
+                                choice.strainMost};
+    check = [this, p, c, bound] { checkStrainRedo(device_, p, c.vertexSlot, bound, clock_.data()); };
+  }
   substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity,
                SubstepTime{clock_.data(), s.dt, s.substeps}, known, s.iterations,
                s.chebyshev,
-               {substepStart_.data(), substepVelocity_.data(), velocityFix_.data(), contactStart_.data()}, contacts);
+               {substepStart_.data(), substepVelocity_.data(), velocityFix_.data(), contactStart_.data(),
+                redo ? firstVelocity_.data() : nullptr},
+               contacts, check);
 }
 
 }  // namespace soak

@@ -7,6 +7,7 @@
 
 #include "Backend/Buffer.h"
 #include "Cloth/AdaptiveSubsteps.h"
+#include "Cloth/StrainRedo.h"
 #include "Cloth/SubstepClock.h"
 #include "Cloth/ClothContactLists.h"
 #include "Cloth/ClothSystem.h"
@@ -25,6 +26,7 @@ struct ClothStepSettings {
   int strainFirstSubsteps = 0;  // the strain rule's count before it has measured (0: substeps; ClothSolverDefaults.h)
   float strainTarget = 0.f;  // Simulation.clothStrainTarget: > 0 (with substepTravel), sub-steps from the strain (AdaptiveSubsteps.h)
   bool strainStretchOnly = false;  // Simulation.clothStrainStretchOnly
+  float strainRedo = 0.f;    // Simulation.clothStrainRedo: > 0 (with strainTarget), the redo's bound over the target (StrainRedo.h)
   int iterations = 1;        // Simulation.clothIterations: constraint rounds per (sub-)step
   ChebyshevSchedule chebyshev;  // Simulation.clothSpectralRadius and clothChebyshevDelay
   int contactPasses = 2;     // particle contact passes per (sub-)step
@@ -79,7 +81,7 @@ class ClothStep {
   ClothContactLists contactLists_;
   Buffer<int> crossingFlag_;  // the crossing guard's flags (CrossingGuard.h), 0 between sub-steps
   Buffer<Float4> substepStart_, contactStart_;
-  Buffer<Vec3> substepVelocity_, velocityFix_;
+  Buffer<Vec3> substepVelocity_, velocityFix_, firstVelocity_;
   Buffer<SubstepClock> clock_;  // one
   Buffer<float> vertexTravel_;  // per vertex, AdaptiveSubsteps.h
   Buffer<float> maxTravel_;     // one float: the largest

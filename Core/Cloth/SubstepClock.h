@@ -16,6 +16,8 @@ struct SubstepClock {
   int contactSubsteps = 0; // of the step's sub-steps, how many run the contact passes (contactsIn)
   int contactsDue = 1;     // 1 while the sub-step under way runs them: the contact kernels' onlyIf
   StrainSubsteps strain;   // what the strain asks for (AdaptiveSubsteps.h): state a checkpoint keeps
+  int attempt = 0;         // the step's redos so far (StrainRedo.h); 0 while its first sub-steps run
+  int redoPast = 0;        // edges past the redo's bound, counted after the step's last sub-step
 };
 
 // What a kernel needs to read the clock: where it is, the step's dt, and

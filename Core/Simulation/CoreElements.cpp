@@ -299,6 +299,13 @@ void registerCoreElements(ModuleRegistry& r) {
                  "compression. A sheet held at points wrinkles across the pulls, finer than its mesh, and shows it "
                  "as shortened edges that more sub-steps barely change (Doc/model.md, \"The default cloth "
                  "solver\"). false: |l - l0| / l0, the strain stats.csv's strain_p99_* columns report.")
+        .real("clothStrainRedo", &S::clothStrainRedo, "",
+              "With clothStrainTarget > 0: a step whose cloth sub-steps leave over 1 % of the edges with a "
+              "strain |l - l0| / l0 past this times clothStrainTarget (3 % by default) runs them again from "
+              "the step's start, half as many again, at most 3 times and within clothStrainMaxSubsteps: a load "
+              "that grows within a few steps meets the count it needs in the step it comes (Doc/model.md, "
+              "\"The default cloth solver\"). 0: no redo.",
+              0.0, 100.0)
         .boolean("clothContactsBySpeed", &S::clothContactsBySpeed,
                  "With clothSubstepTravel > 0: the cloth's contact passes (particle and vertex-triangle contact) "
                  "run in as many of a step's sub-steps as its speed asks for (one a step for slow cloth), spread "

@@ -46,6 +46,7 @@ struct SimulationSettings {
   int clothStrainFirstSubsteps = 0;
   bool clothStrainStretchOnly = false;  // the strain rule counts stretch alone, not compression (AdaptiveSubsteps.h)
   float clothStrainTarget = -1.f;  // > 0, with clothSubstepTravel: sub-steps from the strain left (Cloth/AdaptiveSubsteps.h); < 0: the solver's own
+  float clothStrainRedo = 1.5f;  // > 0, with the strain rule: a step past this times the target is redone (Cloth/StrainRedo.h)
   float clothSpectralRadius = 0.95f;  // rho of the chebyshev cloth solve (Cloth/ClothJacobi.h)
   int clothChebyshevDelay = 2;        // plain Jacobi iterations before its Chebyshev weights (ChebyshevSchedule)
   int couplingPasses = 2;      // passes of the water-triangle constraint per step (n_s of Eq. 5 for it)
