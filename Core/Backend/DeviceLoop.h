@@ -14,7 +14,7 @@
 // 1: a loop node runs its body once before it reads the condition.
 // countMayChange: the body may set *index and *count back (a redo of the
 // rounds, Cloth/StrainRedo.h); where the host queues the rounds it then
-// reads both again after the last it knew of (a wait on the GPU).
+// reads both again after the last it knew of (a second wait on the GPU).
 // The body may only queue work on the device: a host wait, an allocation
 // or a copy to the host inside a loop node is a logic_error.
 #include "Backend/Device.h"
@@ -37,10 +37,14 @@ int repeatOnDevice(Device d, int* index, const int* count, int known, Body&& bod
     body();
     advanceDeviceLoop(d, index, count);
     if (countMayChange && r + 1 == rounds) {
-      int at = 0, now = 0;
-      copyDeviceToHost(d, &at, index, sizeof(int));
-      copyDeviceToHost(d, &now, count, sizeof(int));
-      rounds = r + 1 + (now > at ? now - at : 0);
+      int at[2] = {0, 0};  // *index and *count: one read where they lie side by side
+      if (count == index + 1) {
+        copyDeviceToHost(d, at, index, 2 * sizeof(int));
+      } else {
+        copyDeviceToHost(d, &at[0], index, sizeof(int));
+        copyDeviceToHost(d, &at[1], count, sizeof(int));
+      }
+      rounds = r + 1 + (at[1] > at[0] ? at[1] - at[0] : 0);
     }
   }
   return rounds;

@@ -98,7 +98,7 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
     firstVelocity_.resize(p.count);
     const ClothSystem::EdgeList edges = cloth.strainEdges();
     const StrainRedoCheck bound{edges.edges, edges.rest, edges.count, s.strainRedo * s.strainTarget,
-                                choice.strainMost};
+                                choice.strainMost, s.strainStretchOnly};
     check = [this, p, c, bound] { checkStrainRedo(device_, p, c.vertexSlot, bound, clock_.data()); };
   }
   substepCloth(device_, p, cloth, colliders, colliderCount, s.collisionRadiusScale, s.gravity,

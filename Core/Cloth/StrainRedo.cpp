@@ -13,7 +13,8 @@ void checkStrainRedo(Device d, ParticleView p, const int* vertexSlot, StrainRedo
     if (clock->substep + 1 != clock->substeps) return;  // not the step's last sub-step
     const Vec3 a = p.predicted[vertexSlot[check.edges[e].a]].xyz();
     const Vec3 b = p.predicted[vertexSlot[check.edges[e].b]].xyz();
-    if (fabsf(length(a - b) - check.rest[e]) > check.bound * check.rest[e]) atomicAddInt(&clock->redoPast, 1);
+    const float change = length(a - b) - check.rest[e];
+    if ((check.stretchOnly ? change : fabsf(change)) > check.bound * check.rest[e]) atomicAddInt(&clock->redoPast, 1);
   }, "cloth.substeps.redo_count");
   forEach(d, 1, SOAK_LAMBDA(int) {
     SubstepClock& k = *clock;

@@ -57,10 +57,12 @@ struct StrainRedoCheck {
   int edgeCount = 0;
   float bound = 0.f;  // clothStrainRedo x clothStrainTarget
   int most = 0;       // the strain rule's most sub-steps
+  bool stretchOnly = false;  // clothStrainStretchOnly: as the strain rule, stretch alone
 };
 
 // After a sub-step: where it was the step's last, counts the edges whose
-// strain |l - l0| / l0 at the cloth's x* passes the bound, and redoes the
+// strain |l - l0| / l0 at the cloth's x* (with stretchOnly, (l - l0) / l0)
+// passes the bound, and redoes the
 // step where more than 1 % do, up to kStrainRedoAttempts times and within
 // `most` sub-steps. Queues two kernels; the clock's redo fields are reset
 // for the next step by chooseClothSubsteps.

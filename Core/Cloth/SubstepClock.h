@@ -10,6 +10,8 @@
 namespace soak {
 
 struct SubstepClock {
+  // substep and substeps side by side: a host that queues the sub-steps
+  // reads both back in one copy after a redo's check (Backend/DeviceLoop.h).
   int substep = 0;         // the sub-step under way, from 0
   int substeps = 0;        // the step's count (0 before the first step)
   long long taken = 0;     // sub-steps of all steps so far
