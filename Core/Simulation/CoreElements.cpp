@@ -301,11 +301,11 @@ void registerCoreElements(ModuleRegistry& r) {
                  "solver\"). false: |l - l0| / l0, the strain stats.csv's strain_p99_* columns report.")
         .real("clothStrainRedo", &S::clothStrainRedo, "",
               "With clothStrainTarget > 0: a step whose cloth sub-steps leave over 1 % of the edges with a "
-              "strain |l - l0| / l0 (with clothStrainStretchOnly, stretch alone) past this times clothStrainTarget "
-              "(3 % by default) runs them again from "
-              "the step's start, half as many again, at most 3 times and within clothStrainMaxSubsteps: a load "
-              "that grows within a few steps meets the count it needs in the step it comes (Doc/model.md, "
-              "\"The default cloth solver\"). 0: no redo.",
+              "strain |l - l0| / l0 (with clothStrainStretchOnly, stretch alone) past this times "
+              "clothStrainTarget (3 % by default) runs them again from the step's start, half as many again, "
+              "at most 3 times and within clothStrainMaxSubsteps: a load that grows within a few steps meets "
+              "the count it needs in the step it comes (Doc/model.md, \"The default cloth solver\"). 0: no "
+              "redo; under 1 the bound lies under the target, and most loaded steps are redone.",
               0.0, 100.0)
         .boolean("clothContactsBySpeed", &S::clothContactsBySpeed,
                  "With clothSubstepTravel > 0: the cloth's contact passes (particle and vertex-triangle contact) "

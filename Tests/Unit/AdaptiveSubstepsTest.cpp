@@ -346,10 +346,12 @@ namespace {
 // The sheet of ClothSystem.ASheetWithNothingChosen... (40 x 40, 1.2 m,
 // the default solver) hung by `pins` (by default two opposite corners,
 // a diagonal) for `seconds`: its worst per-frame stretch and two-sided
-// p99, the most sub-steps a step took and the last step's.
+// p99, the most sub-steps a step took and the last step's, and from the
+// constraint phases the solve ran (a redo's discarded sub-steps included)
+// the sub-steps run a step and the steps redone.
 struct Hung {
-  double worstStretchP99 = 0.0, worstP99 = 0.0, meanSubsteps = 0.0;
-  int mostSubsteps = 0, lastSubsteps = 0;
+  double worstStretchP99 = 0.0, worstP99 = 0.0, meanSubsteps = 0.0, substepsRun = 0.0;
+  int mostSubsteps = 0, lastSubsteps = 0, redoneSteps = 0;
 };
 Hung hangSheet(const std::string& simulationAttributes, double seconds, const std::string& pins = "u0v0 u1v1") {
   test::TestRegistry reg;
@@ -360,14 +362,26 @@ Hung hangSheet(const std::string& simulationAttributes, double seconds, const st
       Device::Cpu, reg);
   Hung r;
   const int steps = int(std::lround(seconds / sim->settings.timeStep));
+  std::vector<long long> phases;  // a step's constraint phases
+  std::vector<int> counts;        // its sub-steps, a redo's last count
   for (int s = 1; s <= steps; ++s) {
+    const long long before = sim->clothPhasesTaken();
     sim->step();
+    phases.push_back(sim->clothPhasesTaken() - before);
+    counts.push_back(sim->lastClothSubsteps());
     const StatsRow row = sim->collectStats();
     r.worstStretchP99 = std::max(r.worstStretchP99, row.get("stretch_p99_cloth"));
     r.worstP99 = std::max(r.worstP99, row.get("strain_p99_cloth"));
     r.mostSubsteps = std::max(r.mostSubsteps, int(row.get("cloth_substeps")));
     r.meanSubsteps += row.get("cloth_substeps") / steps;
     r.lastSubsteps = int(row.get("cloth_substeps"));
+  }
+  // Phases a sub-step: the fewest a step's count ran (a step not redone).
+  long long perSubstep = phases[0] / counts[0];
+  for (std::size_t s = 0; s < phases.size(); ++s) perSubstep = std::min(perSubstep, phases[s] / counts[s]);
+  for (std::size_t s = 0; s < phases.size(); ++s) {
+    r.substepsRun += double(phases[s]) / double(perSubstep) / steps;
+    r.redoneSteps += phases[s] > perSubstep * counts[s];
   }
   return r;
 }
@@ -437,11 +451,72 @@ TEST(AdaptiveSubsteps, TheStrainRedoKeepsAFallingSheetUnderHalfAgainTheTargetFro
   const std::string counts = "clothSubsteps='2' clothIterations='12' clothSubstepTravel='0.5' clothStrainTarget='0.02' ";
   const Hung without = hangSheet(counts + "clothStrainRedo='0'", 1.0);
   const Hung with = hangSheet(counts, 1.0);
-  std::printf("sheet hung by a diagonal from 2 sub-steps, 1 s: without the redo p99 %.2f %%, %.2f sub-steps a step "
-              "(at most %d); with it %.2f %%, %.2f (at most %d)\n",
-              100 * without.worstP99, without.meanSubsteps, without.mostSubsteps, 100 * with.worstP99,
-              with.meanSubsteps, with.mostSubsteps);
+  std::printf("sheet hung by a diagonal from 2 sub-steps, 1 s: without the redo p99 %.2f %%, %.2f sub-steps run a "
+              "step (at most %d); with it %.2f %%, %.2f (at most %d), %d steps redone\n",
+              100 * without.worstP99, without.substepsRun, without.mostSubsteps, 100 * with.worstP99,
+              with.substepsRun, with.mostSubsteps, with.redoneSteps);
   EXPECT_GT(without.worstP99, 0.03);
   EXPECT_LE(with.worstP99, 0.03);
-  EXPECT_LT(with.meanSubsteps, 2.0 * without.meanSubsteps);
+  EXPECT_EQ(without.redoneSteps, 0);
+  EXPECT_GT(with.redoneSteps, 0);
+  EXPECT_LT(with.substepsRun, 2.0 * without.substepsRun);  // the discarded sub-steps counted
+}
+
+TEST(AdaptiveSubsteps, TheRedoActsAfterTheLastSubstepWhereOverOnePercentOfTheEdgesPassItsBound) {
+  // A chain of 200 edges of rest length 1, `stretched` of them at 4 %,
+  // `squeezed` at -4 %: the bound is 1.5 x 2 %, and 1 % is 2 edges.
+  auto check = [](int stretched, int squeezed, SubstepClock k, bool stretchOnly = false, int most = 32) {
+    const int n = 200;
+    std::vector<Float4> x(n + 1);
+    std::vector<ClothEdge> edges(n);
+    std::vector<float> rest(n, 1.f);
+    std::vector<int> slot(n + 1);
+    float at = 0.f;
+    for (int e = 0; e <= n; ++e) {
+      x[e] = Float4(at, 0.f, 0.f, 1.f);
+      slot[e] = e;
+      if (e < n) {
+        edges[e].a = e;
+        edges[e].b = e + 1;
+        at += e < stretched ? 1.04f : e < stretched + squeezed ? 0.96f : 1.f;
+      }
+    }
+    ParticleView p;
+    p.predicted = x.data();
+    p.count = n + 1;
+    checkStrainRedo(Device::Cpu, p, slot.data(), {edges.data(), rest.data(), n, 1.5f * 0.02f, most, stretchOnly}, &k);
+    return k;
+  };
+  SubstepClock last;
+  last.substeps = 4;
+  last.substep = 3;  // the step's last sub-step
+  last.contactSubsteps = 4;
+  last.taken = 4;
+  last.strain.substeps = 4;
+  SubstepClock k = check(2, 0, last);  // exactly 1 %: kept
+  EXPECT_EQ(k.substeps, 4);
+  EXPECT_EQ(k.substep, 3);
+  EXPECT_EQ(k.redoPast, 0);
+  k = check(3, 0, last);  // over 1 %: redone, half as many again, from the start
+  EXPECT_EQ(k.substeps, 6);
+  EXPECT_EQ(k.substep, -1);  // the loop's advance makes it 0
+  EXPECT_EQ(k.attempt, 1);
+  EXPECT_EQ(k.taken, 10);  // both rounds of sub-steps counted
+  EXPECT_EQ(k.contactSubsteps, 6);  // contacts in every sub-step stay so
+  EXPECT_EQ(k.strain.substeps, 6);
+  EXPECT_EQ(k.redoPast, 0);
+  EXPECT_EQ(check(1, 2, last).substeps, 6);        // both sides count
+  EXPECT_EQ(check(1, 2, last, true).substeps, 4);  // stretch alone: 1 edge
+  SubstepClock early = last;
+  early.substep = 1;
+  EXPECT_EQ(check(50, 0, early).substeps, 4);  // not the last sub-step: nothing counted
+  EXPECT_EQ(check(50, 0, early).redoPast, 0);
+  SubstepClock spent = last;
+  spent.attempt = kStrainRedoAttempts;
+  EXPECT_EQ(check(50, 0, spent).substeps, 4);  // no more redos this step
+  EXPECT_EQ(check(50, 0, last, false, 4).substeps, 4);  // at the most already
+  EXPECT_EQ(check(50, 0, last, false, 5).substeps, 5);  // within the most
+  SubstepClock fewContacts = last;
+  fewContacts.contactSubsteps = 2;
+  EXPECT_EQ(check(50, 0, fewContacts).contactSubsteps, 2);  // contacts from the speed keep their count
 }

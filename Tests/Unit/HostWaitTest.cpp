@@ -19,7 +19,8 @@ namespace {
 // speed (the chebyshev default, travel 0.5) the host reads the step's
 // sub-step count back on the CPU and in a GPU step queued kernel by kernel,
 // and with the strain redo (Cloth/StrainRedo.h) the sub-step and count
-// again after the last sub-step; in a GPU step graph it does neither
+// again after the last sub-step (and after each redo's last: this scene's
+// sheet is never redone); in a GPU step graph it does neither
 // (Backend/DeviceLoop.h, Tests/Gpu/GpuAdaptiveSubstepsTest.cpp).
 std::unique_ptr<Simulation> dripScene(test::TestRegistry& reg, const std::string& travel = "0",
                                       const std::string& redo = "1.5") {
