@@ -520,3 +520,49 @@ TEST(AdaptiveSubsteps, TheRedoActsAfterTheLastSubstepWhereOverOnePercentOfTheEdg
   fewContacts.contactSubsteps = 2;
   EXPECT_EQ(check(50, 0, fewContacts).contactSubsteps, 2);  // contacts from the speed keep their count
 }
+
+TEST(AdaptiveSubsteps, ARedoneStepEndsAsTheSameStepRunAtItsNewCountFromTheStart) {
+  // The diagonal-hung sheet from 2 sub-steps (no bending, so that the
+  // fewest count, which sets a sub-step's bending, is free), contacts in
+  // every sub-step. Two runs agree bit for bit until the first step that
+  // is redone, to n' sub-steps in its last round; the second run takes
+  // that step at n' from the start (its fewest and most set to n' for the
+  // step, no redo). The
+  // redo restores every part of the sub-steps' state, so both end the step
+  // with the same sheet.
+  const std::string xml =
+      "<Scene><Simulation clothSubsteps='2' clothIterations='12' clothSubstepTravel='0.5' "
+      "clothStrainTarget='0.02' clothContactsBySpeed='false'/>"
+      "<Cloth origin='-0.6 1.9 0' axisU='1 0 0' axisV='0 -1 0' width='1.2' height='1.2' cellsU='39' cellsV='39' "
+      "pinCorners='u0v0 u1v1' bendStiffness='0'/></Scene>";
+  test::TestRegistry regA, regB;
+  auto redone = test::makeSimulation(xml, Device::Cpu, regA);
+  auto direct = test::makeSimulation(xml, Device::Cpu, regB);
+  direct->settings.clothStrainRedo = 0.f;
+  const long long perSubstep = redone->cloth.constraintPhasesPerStep(redone->settings.clothIterations, 1);
+  int step = 0, first = 0, again = 0;  // the redone step's sub-steps: all rounds before the last, the last's
+  for (step = 1; step <= 100; ++step) {
+    const long long before = redone->clothPhasesTaken();
+    redone->step();
+    const long long ran = (redone->clothPhasesTaken() - before) / perSubstep;  // sub-steps run, both rounds
+    if (ran > redone->lastClothSubsteps()) {
+      again = redone->lastClothSubsteps();
+      first = int(ran) - again;
+      break;
+    }
+    direct->step();
+  }
+  ASSERT_LE(step, 100) << "no step was redone";
+  std::printf("first redone step: %d, %d sub-steps discarded, then %d\n", step, first, again);
+  direct->settings.clothSubsteps = direct->settings.clothMaxSubsteps = direct->settings.clothStrainMaxSubsteps = again;
+  direct->step();
+  EXPECT_EQ(direct->lastClothSubsteps(), again);
+  const std::vector<Vec3> a = redone->cloth.downloadVertexPositions(redone->particles, 0);
+  const std::vector<Vec3> b = direct->cloth.downloadVertexPositions(direct->particles, 0);
+  const std::vector<Vec3> va = redone->particles.downloadVelocities(), vb = direct->particles.downloadVelocities();
+  ASSERT_EQ(a.size(), b.size());
+  int differing = 0;
+  for (std::size_t v = 0; v < a.size(); ++v) differing += a[v].x != b[v].x || a[v].y != b[v].y || a[v].z != b[v].z;
+  for (std::size_t i = 0; i < va.size(); ++i) differing += va[i].x != vb[i].x || va[i].y != vb[i].y || va[i].z != vb[i].z;
+  EXPECT_EQ(differing, 0);
+}
