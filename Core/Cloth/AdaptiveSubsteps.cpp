@@ -21,10 +21,8 @@ void measureClothStrain(Device d, ParticleView p, const int* vertexSlot, const C
   if (n == 0) return;
   forEach(d, n, SOAK_LAMBDA(int e) {
     const float calm = strainCalmBound(clock->strain, target, fewest);
-    const Vec3 a = p.position[vertexSlot[edges[e].a]].xyz();
-    const Vec3 b = p.position[vertexSlot[edges[e].b]].xyz();
-    const float change = (length(a - b) - rest[e]) / rest[e];
-    const float strain = stretchOnly ? change : fabsf(change);
+    const float strain = edgeStrain(p.position[vertexSlot[edges[e].a]].xyz(), p.position[vertexSlot[edges[e].b]].xyz(),
+                                    rest[e], stretchOnly);
     flags[e] = strain > target;
     flags[n + e] = strain > calm;
   }, "cloth.substeps.strain");

@@ -145,6 +145,15 @@ SOAK_INLINE float strainCalmBound(StrainSubsteps s, float target, int fewest) {
   }
   return kStrainLoweringMargin * target * r * r;
 }
+// An edge's strain as the strain rule counts it: |l - l0| / l0, or with
+// `stretchOnly` the stretch (l - l0) / l0.
+SOAK_INLINE float edgeStrain(Vec3 a, Vec3 b, float rest, bool stretchOnly) {
+  const float change = (length(a - b) - rest) / rest;
+  return stretchOnly ? change : fabsf(change);
+}
+// 1 % of `edges`, rounded up: more edges than this past a bound put the
+// 99th percentile past it.
+SOAK_INLINE long long strainOnePercent(int edges) { return (static_cast<long long>(edges) + 99) / 100; }
 
 struct SubstepClock;
 // Writes to counts[0] the edges whose strain |l - l0| / l0 exceeds `target`
@@ -193,6 +202,18 @@ struct SubstepChoice {
 void chooseClothSubsteps(Device d, SubstepClock* clock, const float* maxTravel, const int* strainCounts,
                          SubstepChoice choice);
 
+// The rule's state after a raise: no calm or steady spell, and a probe the
+// raise undoes doubles the wait for the next.
+SOAK_INLINE StrainSubsteps strainRaised(StrainSubsteps s) {
+  s.calmSteps = 0;
+  s.steadySteps = 0;
+  if (s.probeAge >= 0) {
+    s.steadyWait = s.steadyWait * 2 < kStrainMostSteadySteps ? s.steadyWait * 2 : kStrainMostSteadySteps;
+    s.probeAge = -1;
+  }
+  return s;
+}
+
 // What the strain asks for next, from what it asked before and the counts:
 // `above` edges past the target, `aboveCalm` past strainCalmBound.
 // Before the first measurement (current.substeps 0) the count is `first`
@@ -203,7 +224,7 @@ SOAK_INLINE StrainSubsteps substepsForStrain(StrainSubsteps current, int above, 
   StrainSubsteps next = current;
   const int asked = current.substeps > 0 ? current.substeps : first;
   next.substeps = asked < fewest ? fewest : asked > top ? top : asked;
-  const long long onePercent = (static_cast<long long>(edges) + 99) / 100;  // edges past the 99th percentile
+  const long long onePercent = strainOnePercent(edges);
   if (next.steadySteps < kStrainMostSteadySteps) ++next.steadySteps;
   if (next.probeAge >= 0 && ++next.probeAge > kStrainProbeSteps) {  // the probe's count held
     next.probeAge = -1;
@@ -214,12 +235,7 @@ SOAK_INLINE StrainSubsteps substepsForStrain(StrainSubsteps current, int above, 
     const long long wide = (static_cast<long long>(edges) * kStrainWidePercent + 99) / 100;
     const int raise = above > wide ? half : 1;
     next.substeps = next.substeps + raise < top ? next.substeps + raise : top;
-    next.calmSteps = 0;
-    next.steadySteps = 0;
-    if (next.probeAge >= 0) {  // a probe undone: wait twice as long for the next
-      next.steadyWait = next.steadyWait * 2 < kStrainMostSteadySteps ? next.steadyWait * 2 : kStrainMostSteadySteps;
-      next.probeAge = -1;
-    }
+    next = strainRaised(next);
   } else if (aboveCalm < onePercent && next.substeps > fewest) {
     if (++next.calmSteps >= kStrainCalmSteps) {
       if (strainProbing(current)) next.probeAge = 0;

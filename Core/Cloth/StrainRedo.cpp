@@ -1,7 +1,5 @@
 #include "Cloth/StrainRedo.h"
 
-#include <cmath>
-
 #include "Backend/ForEach.h"
 #include "Base/Atomic.h"
 
@@ -11,18 +9,17 @@ void checkStrainRedo(Device d, ParticleView p, const int* vertexSlot, StrainRedo
   if (check.edgeCount == 0) return;
   forEach(d, check.edgeCount, SOAK_LAMBDA(int e) {
     if (clock->substep + 1 != clock->substeps) return;  // not the step's last sub-step
-    const Vec3 a = p.predicted[vertexSlot[check.edges[e].a]].xyz();
-    const Vec3 b = p.predicted[vertexSlot[check.edges[e].b]].xyz();
-    const float change = length(a - b) - check.rest[e];
-    if ((check.stretchOnly ? change : fabsf(change)) > check.bound * check.rest[e]) atomicAddInt(&clock->redoPast, 1);
+    const ClothEdge edge = check.edges[e];
+    if (edgeStrain(p.predicted[vertexSlot[edge.a]].xyz(), p.predicted[vertexSlot[edge.b]].xyz(), check.rest[e],
+                   check.stretchOnly) > check.bound)
+      atomicAddInt(&clock->redoPast, 1);
   }, "cloth.substeps.redo_count");
   forEach(d, 1, SOAK_LAMBDA(int) {
     SubstepClock& k = *clock;
     if (k.substep + 1 != k.substeps) return;
-    const long long onePercent = (static_cast<long long>(check.edgeCount) + 99) / 100;
     const int past = k.redoPast;
     k.redoPast = 0;
-    if (past <= onePercent || k.attempt >= kStrainRedoAttempts || k.substeps >= check.most) return;
+    if (past <= strainOnePercent(check.edgeCount) || k.attempt >= kStrainRedoAttempts || k.substeps >= check.most) return;
     const int before = k.substeps, n = strainRedoSubsteps(before, check.most);
     ++k.attempt;
     k.taken += n;

@@ -37,18 +37,12 @@ SOAK_INLINE int strainRedoSubsteps(int n, int most) {
 }
 
 // The strain rule's state after a redo to `substeps`: the redo is a raise
-// (AdaptiveSubsteps.h, substepsForStrain), so the steps after it keep the
-// count and a probe it undoes doubles the wait for the next.
+// (AdaptiveSubsteps.h, strainRaised), so the steps after it keep the count
+// and a probe it undoes doubles the wait for the next.
 SOAK_INLINE StrainSubsteps strainRedone(StrainSubsteps s, int substeps) {
   if (s.substeps < substeps) s.substeps = substeps;
   s.leftBy = substeps;
-  s.calmSteps = 0;
-  s.steadySteps = 0;
-  if (s.probeAge >= 0) {
-    s.steadyWait = s.steadyWait * 2 < kStrainMostSteadySteps ? s.steadyWait * 2 : kStrainMostSteadySteps;
-    s.probeAge = -1;
-  }
-  return s;
+  return strainRaised(s);
 }
 
 struct StrainRedoCheck {
@@ -61,9 +55,8 @@ struct StrainRedoCheck {
 };
 
 // After a sub-step: where it was the step's last, counts the edges whose
-// strain |l - l0| / l0 at the cloth's x* (with stretchOnly, (l - l0) / l0)
-// passes the bound, and redoes the
-// step where more than 1 % do, up to kStrainRedoAttempts times and within
+// strain at the cloth's x* (edgeStrain, AdaptiveSubsteps.h) passes the
+// bound, and redoes the step where more than 1 % do, up to kStrainRedoAttempts times and within
 // `most` sub-steps. Queues two kernels; the clock's redo fields are reset
 // for the next step by chooseClothSubsteps.
 void checkStrainRedo(Device d, ParticleView p, const int* vertexSlot, StrainRedoCheck check, SubstepClock* clock);

@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <vector>
 
 #include "Backend/Device.h"
 
+#include "Support/HungSheet.h"
 #include "Support/TestScenes.h"
 
 using namespace soak;
@@ -95,15 +95,11 @@ TEST(GpuAdaptiveSubsteps, TheStrainRedoRunsInTheStepGraphAndHoldsTheSheetAsOnThe
   // the step graph's loop node, with no host wait, and hold the sheet as
   // on the CPU.
   const std::string xml =
-      "<Scene><Simulation clothSubsteps='2' clothIterations='12' clothSubstepTravel='0.5' clothStrainTarget='0.02'/>"
-      "<Cloth origin='-0.6 1.9 0' axisU='1 0 0' axisV='0 -1 0' width='1.2' height='1.2' cellsU='39' cellsV='39' "
-      "pinCorners='u0v0 u1v1'/></Scene>";
+      test::hungSheetScene("clothSubsteps='2' clothIterations='12' clothSubstepTravel='0.5' clothStrainTarget='0.02'");
   test::TestRegistry cpuReg, gpuReg;
   auto cpu = test::makeSimulation(xml, Device::Cpu, cpuReg);
   auto gpu = test::makeSimulation(xml, Device::Cuda, gpuReg);
-  int waitingSteps = 0, cpuMost = 0, gpuMost = 0;
-  std::vector<long long> phases;  // the GPU's constraint phases a step, a redo's discarded sub-steps included
-  std::vector<int> counts;        // its sub-steps, a redo's last count
+  int waitingSteps = 0, cpuMost = 0, gpuMost = 0, redone = 0;
   double cpuWorst = 0.0, gpuWorst = 0.0;
   for (int s = 1; s <= 67; ++s) {
     cpu->step();
@@ -112,18 +108,12 @@ TEST(GpuAdaptiveSubsteps, TheStrainRedoRunsInTheStepGraphAndHoldsTheSheetAsOnThe
     const unsigned long long before = hostWaits();
     gpu->step();
     if (!maintenance && hostWaits() != before) ++waitingSteps;
-    phases.push_back(gpu->clothPhasesTaken() - phasesBefore);
-    counts.push_back(gpu->lastClothSubsteps());
+    redone += test::substepsRun(*gpu, gpu->clothPhasesTaken() - phasesBefore) > gpu->lastClothSubsteps();
     cpuWorst = std::max(cpuWorst, cpu->collectStats().get("strain_p99_cloth"));
     gpuWorst = std::max(gpuWorst, gpu->collectStats().get("strain_p99_cloth"));
     cpuMost = std::max(cpuMost, cpu->lastClothSubsteps());
     gpuMost = std::max(gpuMost, gpu->lastClothSubsteps());
   }
-  // A step not redone runs its count's phases; a redone one more.
-  long long perSubstep = phases[0] / counts[0];
-  for (std::size_t s = 0; s < phases.size(); ++s) perSubstep = std::min(perSubstep, phases[s] / counts[s]);
-  int redone = 0;
-  for (std::size_t s = 0; s < phases.size(); ++s) redone += phases[s] > perSubstep * counts[s];
   std::printf("sheet hung by a diagonal from 2 sub-steps with the strain redo, 1 s: CPU p99 %.2f %% (most %d "
               "sub-steps), GPU %.2f %% (most %d, %d steps redone), %d plain GPU steps waited\n",
               100 * cpuWorst, cpuMost, 100 * gpuWorst, gpuMost, redone, waitingSteps);

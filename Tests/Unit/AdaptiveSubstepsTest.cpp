@@ -13,6 +13,7 @@
 #include "Cloth/AdaptiveSubsteps.h"
 #include "Cloth/StrainRedo.h"
 #include "Cloth/SubstepClock.h"
+#include "Support/HungSheet.h"
 #include "Support/TestScenes.h"
 
 using namespace soak;
@@ -355,33 +356,21 @@ struct Hung {
 };
 Hung hangSheet(const std::string& simulationAttributes, double seconds, const std::string& pins = "u0v0 u1v1") {
   test::TestRegistry reg;
-  auto sim = test::makeSimulation(
-      "<Scene><Simulation " + simulationAttributes +
-          "/><Cloth origin='-0.6 1.9 0' axisU='1 0 0' axisV='0 -1 0' width='1.2' height='1.2' cellsU='39' "
-          "cellsV='39' pinCorners='" + pins + "'/></Scene>",
-      Device::Cpu, reg);
+  auto sim = test::makeSimulation(test::hungSheetScene(simulationAttributes, pins), Device::Cpu, reg);
   Hung r;
   const int steps = int(std::lround(seconds / sim->settings.timeStep));
-  std::vector<long long> phases;  // a step's constraint phases
-  std::vector<int> counts;        // its sub-steps, a redo's last count
   for (int s = 1; s <= steps; ++s) {
     const long long before = sim->clothPhasesTaken();
     sim->step();
-    phases.push_back(sim->clothPhasesTaken() - before);
-    counts.push_back(sim->lastClothSubsteps());
+    const long long ran = test::substepsRun(*sim, sim->clothPhasesTaken() - before);
+    r.substepsRun += double(ran) / steps;
+    r.redoneSteps += ran > sim->lastClothSubsteps();
     const StatsRow row = sim->collectStats();
     r.worstStretchP99 = std::max(r.worstStretchP99, row.get("stretch_p99_cloth"));
     r.worstP99 = std::max(r.worstP99, row.get("strain_p99_cloth"));
     r.mostSubsteps = std::max(r.mostSubsteps, int(row.get("cloth_substeps")));
     r.meanSubsteps += row.get("cloth_substeps") / steps;
     r.lastSubsteps = int(row.get("cloth_substeps"));
-  }
-  // Phases a sub-step: the fewest a step's count ran (a step not redone).
-  long long perSubstep = phases[0] / counts[0];
-  for (std::size_t s = 0; s < phases.size(); ++s) perSubstep = std::min(perSubstep, phases[s] / counts[s]);
-  for (std::size_t s = 0; s < phases.size(); ++s) {
-    r.substepsRun += double(phases[s]) / double(perSubstep) / steps;
-    r.redoneSteps += phases[s] > perSubstep * counts[s];
   }
   return r;
 }
@@ -530,21 +519,19 @@ TEST(AdaptiveSubsteps, ARedoneStepEndsAsTheSameStepRunAtItsNewCountFromTheStart)
   // step, no redo). The
   // redo restores every part of the sub-steps' state, so both end the step
   // with the same sheet.
-  const std::string xml =
-      "<Scene><Simulation clothSubsteps='2' clothIterations='12' clothSubstepTravel='0.5' "
-      "clothStrainTarget='0.02' clothContactsBySpeed='false'/>"
-      "<Cloth origin='-0.6 1.9 0' axisU='1 0 0' axisV='0 -1 0' width='1.2' height='1.2' cellsU='39' cellsV='39' "
-      "pinCorners='u0v0 u1v1' bendStiffness='0'/></Scene>";
+  const std::string xml = test::hungSheetScene(
+      "clothSubsteps='2' clothIterations='12' clothSubstepTravel='0.5' clothStrainTarget='0.02' "
+      "clothContactsBySpeed='false'",
+      "u0v0 u1v1", "bendStiffness='0'");
   test::TestRegistry regA, regB;
   auto redone = test::makeSimulation(xml, Device::Cpu, regA);
   auto direct = test::makeSimulation(xml, Device::Cpu, regB);
   direct->settings.clothStrainRedo = 0.f;
-  const long long perSubstep = redone->cloth.constraintPhasesPerStep(redone->settings.clothIterations, 1);
   int step = 0, first = 0, again = 0;  // the redone step's sub-steps: all rounds before the last, the last's
   for (step = 1; step <= 100; ++step) {
     const long long before = redone->clothPhasesTaken();
     redone->step();
-    const long long ran = (redone->clothPhasesTaken() - before) / perSubstep;  // sub-steps run, both rounds
+    const long long ran = test::substepsRun(*redone, redone->clothPhasesTaken() - before);  // every round
     if (ran > redone->lastClothSubsteps()) {
       again = redone->lastClothSubsteps();
       first = int(ran) - again;
