@@ -84,6 +84,11 @@ SOAK_PLUGIN(WetCloth) {
           .real("initialSaturation", &WetParams::initialSaturation, "", "Saturation every cloth particle starts with.", 0.0, 1.0)
           .boolean("emission", &WetParams::emission, "Buffers, drips and drip attraction (Section 4.4).")
           .boolean("sticking", &WetParams::sticking, "Wet cloth sticking (Eq. 20).")
+          .choice<StickForm>("stickingForm", &WetParams::stickForm, {{"force", StickForm::Force}, {"correction", StickForm::Correction}},
+                  "force: Eq. 20's attraction changes the cloth's velocity at the end of the step and the next "
+                  "step's cloth solve carries it out against the cloth's stretch; correction: it moves the "
+                  "positions the cloth solve left, unseen by any constraint before the frame (Doc/model.md, "
+                  "'Wet sticking as a force').")
           .boolean("wetWeight", &WetParams::wetWeight, "Held and buffered water add to the cloth particle's mass.")
           .real("wetBendSoftening", &WetParams::wetBendSoftening, "",
                 "Beyond the paper: saturated cloth (S = sMax) bends with 1 - wetBendSoftening of its dry bend "

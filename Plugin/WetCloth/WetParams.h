@@ -15,6 +15,15 @@ enum class DiffusionForm { Conservative = 0, Literal = 1, Fick = 2 };
 // results converge as dt -> 0; PerStep is the paper's form (rate x 0.015 s
 // per step whatever the time step). Doc/model.md, "Rates per second".
 enum class RateForm { PerSecond = 0, PerStep = 1 };
+
+// How Eq. 20's attraction acts. Force: as the force it is, an impulse
+// f dt / m on the velocity at the end of the step, so that the next step's
+// prediction carries it into the cloth solve, which weighs it against the
+// cloth's stretch (Algorithm 1 line 2 with the forces of its last line).
+// Correction: a displacement dt^2 f / m of the positions the cloth solve
+// left, which no constraint sees before the frame. Doc/model.md, "Wet
+// sticking as a force".
+enum class StickForm { Force = 0, Correction = 1 };
 constexpr double kPaperTimeStep = 0.015;  // s
 
 struct WetParams {
@@ -48,6 +57,7 @@ struct WetParams {
   float clothRestDensity = 800.f;  // Table 1, for Psi of Eq. 19
   float initialSaturation = 0.f;  // every cloth particle starts holding S V / c (Figure 6's scenes)
   bool emission = true, sticking = true, wetWeight = true;
+  StickForm stickForm = StickForm::Force;
   // Beyond the paper (Doc/model.md, "Wet stiffness and friction"): at
   // saturation S the bends are 1 - wetBendSoftening S / S^MAX as stiff and
   // colliders grip 1 + wetFriction S / S^MAX times as hard.

@@ -1,5 +1,6 @@
 // wet.stick: Eq. 20, touching cloth particles of different layers attract,
-// most at S^T.
+// most at S^T; as a force on the velocities (after finalize) or as a
+// correction of the positions (before it), WetParams.h's StickForm.
 #include "Physics/Integrate.h"
 #include <algorithm>
 #include <cmath>
@@ -41,7 +42,18 @@ void stickWetCloth(Device d, ParticleView p, ClothView c, WetArrays a, const Wet
     f = laneSum(lanes, f);
     if (lanes.leader()) delta[i] = f * (dt * dt * xi4.w);
   }, "wet.stick", kListLanes);
-  applyCorrectionsAt(d, p, a.cloth.slot, a.cloth.count, delta, "wet.stick.apply");
+  if (w.stickForm == StickForm::Correction) {
+    applyCorrectionsAt(d, p, a.cloth.slot, a.cloth.count, delta, "wet.stick.apply");
+    return;
+  }
+  // As a force: the impulse f dt / m on the velocity finalize set, which the
+  // next step's prediction carries into the cloth solve.
+  const int* slot = a.cloth.slot;
+  const float invDt = 1.f / dt;
+  forEach(d, a.cloth.count, SOAK_LAMBDA(int k) {
+    const int i = slot[k];
+    if (p.position[i].w != 0.f) p.velocity[i] += delta[i] * invDt;
+  }, "wet.stick.apply");
 }
 
 void runStick(WetState& st, Simulation& s) {
