@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "Support/StuckSheets.h"
 #include "Support/TestScenes.h"
 #include "WetScenes.h"
 
@@ -105,36 +106,8 @@ TEST(WetCloth, DampClothSticksAndDryClothDoesNot) {
 }
 
 namespace {
-// Two damp sheets (S^T) 2 cm apart, pinned at their corners, for 0.3 s:
-// the worst stretch p99 of either after any step, and the closest their
-// centres came.
-struct StuckSheets {
-  double worstStretchP99 = 0.0;
-  float closestGap = 1e9f;
-};
-StuckSheets stickTwoSheets(const std::string& form, float stickiness, float timeStep) {
-  test::TestRegistry reg(SOAK_PLUGIN_DIR);
-  auto sim = wetScene("<Simulation gravity='0 -0.000001 0' timeStep='" + std::to_string(timeStep) + "'/>" +
-                          "<Cloth name='lower' origin='-0.2 0.5 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
-                          "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015'/>"
-                          "<Cloth name='upper' origin='-0.2 0.52 -0.2' axisU='1 0 0' axisV='0 0 1' width='0.4' "
-                          "height='0.4' cellsU='20' cellsV='20' pinCorners='u0v0 u1v0 u0v1 u1v1' thickness='0.015'/>"
-                          "<WetCloth initialSaturation='0.12' emission='false' diffusionIterations='0' stickiness='" +
-                          std::to_string(stickiness) + "' stickingForm='" + form + "'/>",
-                      reg);
-  StuckSheets o;
-  const int steps = int(std::lround(0.3 / timeStep));
-  for (int s = 0; s < steps; ++s) {
-    sim->step();
-    const std::vector<ClothStrain> strain = sim->cloth.strain(
-        sim->particles.downloadPositions(),
-        sim->cloth.vertexSlots(sim->particles.downloadIds(), sim->particles.downloadPhases()));
-    for (const ClothStrain& c : strain) o.worstStretchP99 = std::max(o.worstStretchP99, c.stretchP99);
-    const std::vector<Vec3> lower = sim->cloth.downloadVertexPositions(sim->particles, 0);
-    const std::vector<Vec3> upper = sim->cloth.downloadVertexPositions(sim->particles, 1);
-    o.closestGap = std::min(o.closestGap, upper[220].y - lower[220].y);  // the centre vertex (10, 10) of both
-  }
-  return o;
+test::StuckSheets stickTwoSheets(const std::string& form, float stickiness, float timeStep) {
+  return test::stickTwoSheets(Device::Cpu, SOAK_PLUGIN_DIR, form, stickiness, timeStep);
 }
 }  // namespace
 
@@ -144,7 +117,7 @@ TEST(WetCloth, StickingAsAForceLeavesTheStretchToTheClothSolve) {
   // close in while their stretch stays at what the solve leaves (1.3 % p99
   // measured). As a correction after the solve it moves vertices no
   // constraint weighs before the frame (11 % p99).
-  const StuckSheets force = stickTwoSheets("force", 30.f, 0.015f), correction = stickTwoSheets("correction", 30.f, 0.015f);
+  const test::StuckSheets force = stickTwoSheets("force", 30.f, 0.015f), correction = stickTwoSheets("correction", 30.f, 0.015f);
   std::printf("stickiness 30 N, 0.3 s: as a force, worst stretch p99 %.2f %%, closest gap %.4f m; as a correction "
               "%.2f %%, %.4f m\n",
               100 * force.worstStretchP99, force.closestGap, 100 * correction.worstStretchP99, correction.closestGap);
@@ -157,7 +130,7 @@ TEST(WetCloth, StickingPullsAsFarAtHalfTheTimeStep) {
   // Table 1's stickiness as a force: the closest the sheets' centres come
   // in 0.3 s at dt = 0.015 s and 0.0075 s (1.58 and 1.66 cm measured; as a
   // correction 1.57 and 1.66 cm).
-  const StuckSheets paper = stickTwoSheets("force", 0.3f, 0.015f), half = stickTwoSheets("force", 0.3f, 0.0075f);
+  const test::StuckSheets paper = stickTwoSheets("force", 0.3f, 0.015f), half = stickTwoSheets("force", 0.3f, 0.0075f);
   std::printf("stickiness 0.3 N as a force, closest gap in 0.3 s: dt 0.015 s %.4f m, 0.0075 s %.4f m\n",
               paper.closestGap, half.closestGap);
   EXPECT_LT(paper.closestGap, 0.0175f);

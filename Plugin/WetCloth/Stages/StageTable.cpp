@@ -1,7 +1,8 @@
 // The wetting stages in the order of Algorithm 1: after the cloth solve the
 // volumes and saturations (which the core's coupling stage reads as
 // kappa_couple), then absorption, diffusion, emission, sticking, and
-// drying (beyond the paper); sticking as a force after the core's finalize. A new stage: its file in Stages/, and a row.
+// drying (beyond the paper); sticking as a force after the core's
+// finalize. A new stage: its file in Stages/, and a row.
 #include "Pipeline/StageNames.h"
 #include "Pipeline/StageTable.h"
 #include "Stages/WetStages.h"
@@ -24,8 +25,10 @@ const StageRow<WetState> kWetStages[] = {
     {kEmitStage, Place::After, kDiffuseStage, runEmit},
     // Eq. 20 as a force acts on the velocities finalize has set; as a
     // correction, on the positions before it (WetParams.h, StickForm).
-    {kStickStage, Place::After, kEmitStage, runStick, [](const WetState& s) { return s.w.stickForm == StickForm::Correction; }},
-    {kStickStage, Place::After, stage::kFinalize, runStick, [](const WetState& s) { return s.w.stickForm == StickForm::Force; }},
+    {kStickStage, Place::After, kEmitStage, runStick,
+     [](const WetState& s) { return s.w.stickForm == StickForm::Correction; }},
+    {kStickStage, Place::After, stage::kFinalize, runStick,
+     [](const WetState& s) { return s.w.stickForm == StickForm::Force; }},
     {kDryStage, Place::After, kStickStage, runDry, [](const WetState& s) { return s.drying.fluxIntoDryAir > 0.f; }},
 };
 }  // namespace
