@@ -21,11 +21,11 @@ void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Ve
 }
 
 void projectColliders(Device d, ParticleView p, const Collider* colliders, int colliderCount, float radiusScale,
-                      float dt, const float* clothFrictionScale) {
+                      float dt, const float* clothFrictionScale, bool waterOnly) {
   if (colliderCount == 0) return;
   forEach(d, p.count, SOAK_LAMBDA(int i) {
     Float4 xp = p.predicted[i];
-    if (xp.w == 0.f) return;
+    if (xp.w == 0.f || (waterOnly && isCloth(p.phase[i]))) return;
     const Vec3 x = p.position[i].xyz();
     const float r = radiusScale * p.radius[i];
     const float friction = clothFrictionScale && isCloth(p.phase[i]) ? clothFrictionScale[p.id[i]] : 1.f;

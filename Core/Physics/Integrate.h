@@ -18,9 +18,10 @@ void predictPositions(Device d, ParticleView p, Vec3 gravity, float dt, const Ve
 // Projects predicted positions out of every collider; collision radius of a
 // particle is `radiusScale` times its support radius. `clothFrictionScale`
 // (per cloth vertex, by the particle's id; null: 1) multiplies the
-// colliders' friction against cloth particles.
+// colliders' friction against cloth particles. `waterOnly`: cloth
+// particles are left where they are (the cloth solve has projected them).
 void projectColliders(Device d, ParticleView p, const Collider* colliders, int colliderCount, float radiusScale,
-                      float dt, const float* clothFrictionScale = nullptr);
+                      float dt, const float* clothFrictionScale = nullptr, bool waterOnly = false);
 
 // x* += delta for each of the `count` particles whose slots are listed in
 // `slots` (the cloth's, say) that moves (inverse mass > 0): the second half

@@ -10,7 +10,7 @@ inline constexpr const char* kDrain = "drain";            // sinks, domain, whol
 inline constexpr const char* kNeighbours = "neighbours";  // the grid, cloth slots and boundary volumes
 inline constexpr const char* kFluidSolve = "fluid.solve";  // the density constraints (PBF)
 inline constexpr const char* kClothSolve = "cloth.solve";  // the cloth constraints and contacts
-inline constexpr const char* kCollide = "collide";        // colliders
+inline constexpr const char* kCollide = "collide";        // the water out of the colliders (the cloth solve did the cloth's)
 inline constexpr const char* kCoupling = "coupling";      // water-triangle constraint (Eq. 21), reads kappa_couple
 inline constexpr const char* kFinalize = "finalize";      // velocities, XSPH, vorticity
 
