@@ -128,7 +128,8 @@ void attractDrips(Device d, ParticleView p, GridView g, WetArrays a, const WetPa
 
 // wet.stick (Eq. 20): touching cloth particles of different layers attract,
 // most at S^T: dt^2 f / m, added to the positions (StickForm::Correction)
-// or, over dt, to the velocities (StickForm::Force). `delta`: scratch per slot.
+// or, over dt, to the velocities (StickForm::Force). `delta`: scratch per
+// slot (the correction's).
 void stickWetCloth(Device d, ParticleView p, ClothView c, WetArrays a, const WetParams& w, float dt, Vec3* delta);
 
 }  // namespace soak::wet

@@ -16,10 +16,17 @@ namespace soak::wet {
 void stickWetCloth(Device d, ParticleView p, ClothView c, WetArrays a, const WetParams& w, float dt, Vec3* delta) {
   const float sT = w.sT, kAd = w.kappaAd, etaAd = w.etaAd >= 0.f ? w.etaAd : w.kappaAd * w.sT * w.sT;
   const float* S = a.saturation;
+  // As a force the impulse f dt / m goes onto the velocity finalize set (the
+  // next step's prediction carries it into the cloth solve), here: the pass
+  // reads positions only. As a correction the displacement waits in `delta`
+  // until every particle's pull is known, since the pass reads the positions
+  // it would move.
+  const bool asForce = w.stickForm == StickForm::Force;
+  const float invDt = 1.f / dt;
   forEachClothItemLanes(d, a.cloth, SOAK_LAMBDA(int i, int v, Lanes lanes) {
     const Float4 xi4 = p.predicted[i];
     if (xi4.w == 0.f) {
-      if (lanes.leader()) delta[i] = Vec3(0.f, 0.f, 0.f);
+      if (lanes.leader() && !asForce) delta[i] = Vec3(0.f, 0.f, 0.f);
       return;
     }
     const int vi = p.id[i];
@@ -40,20 +47,12 @@ void stickWetCloth(Device d, ParticleView p, ClothView c, WetArrays a, const Wet
       f += xij * (mag / sqrtf(r2));
     });
     f = laneSum(lanes, f);
-    if (lanes.leader()) delta[i] = f * (dt * dt * xi4.w);
+    if (!lanes.leader()) return;
+    const Vec3 dx = f * (dt * dt * xi4.w);
+    if (asForce) p.velocity[i] += dx * invDt;
+    else delta[i] = dx;
   }, "wet.stick", kListLanes);
-  if (w.stickForm == StickForm::Correction) {
-    applyCorrectionsAt(d, p, a.cloth.slot, a.cloth.count, delta, "wet.stick.apply");
-    return;
-  }
-  // As a force: the impulse f dt / m on the velocity finalize set, which the
-  // next step's prediction carries into the cloth solve.
-  const int* slot = a.cloth.slot;
-  const float invDt = 1.f / dt;
-  forEach(d, a.cloth.count, SOAK_LAMBDA(int k) {
-    const int i = slot[k];
-    if (p.position[i].w != 0.f) p.velocity[i] += delta[i] * invDt;
-  }, "wet.stick.apply");
+  if (!asForce) applyCorrectionsAt(d, p, a.cloth.slot, a.cloth.count, delta, "wet.stick.apply");
 }
 
 void runStick(WetState& st, Simulation& s) {
