@@ -94,8 +94,9 @@ if want scale; then
 fi
 
 if [ "$part" = fig6b ]; then
-  # fig6b with the default counts took 16.6 sub-steps a step on the H100 and 7.2 on the CPU: two runs as they
-  # are, and without the strain redo, without wet sticking, with the scene's own counts.
+  # fig6b with the default counts, frame by frame (sub-steps, strain, step_ms): two runs as it is, one without
+  # the strain redo, one without wet sticking, and one with the scene's own counts (Doc/performance.md, "The
+  # default cloth, whole runs and Table 2's cost (H100)").
   log fig6b
   run_all "Scenes/fig6b_emission.xml|fig6b_def|$DEF" "Scenes/fig6b_emission.xml|fig6b_def2|$DEF" \
           "Scenes/fig6b_emission.xml|fig6b_noredo|$DEF --set Simulation.clothStrainRedo=0" \
