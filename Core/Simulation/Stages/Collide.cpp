@@ -5,7 +5,6 @@
 // its constraints and its strain rule (fig9b's landing with the default
 // counts, CPU: 2.68 % p99 with, 1.58 % without; Doc/model.md, "Colliders
 // after the cloth solve").
-#include "Cloth/VertexFields.h"
 #include "Physics/Integrate.h"
 #include "Simulation/Simulation.h"
 #include "Simulation/Stages/CoreStages.h"
@@ -14,7 +13,7 @@ namespace soak {
 
 void runCollide(CoreStageState&, Simulation& sim) {
   projectColliders(sim.device(), sim.particles.view(), sim.deviceColliders(), int(sim.colliders.size()),
-                   kCollisionRadiusScale, float(sim.settings.timeStep), sim.vertexFields.find(field::kFrictionScale),
+                   kCollisionRadiusScale, float(sim.settings.timeStep), /*clothFrictionScale=*/nullptr,
                    /*waterOnly=*/true);
 }
 
