@@ -182,7 +182,7 @@ void runSubstep(const Substep& a) {
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, SubstepTime t, int knownSubsteps,
                   int iterations, ChebyshevSchedule chebyshev, ClothSubstepScratch s,
-                  const ClothContactPasses& contacts, const SubstepCheck& check) {
+                  const ClothContactPasses& contacts, const SubstepCheck& check, float speedUpMargin) {
   const ClothView c = cloth.view();
   const float dt = t.dt;
   const bool oneSubstep = knownSubsteps == 1;
@@ -223,7 +223,8 @@ void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* 
     endSubstep(p, s, i, t.h());
     const Float4 x = p.position[i];
     if (x.w == 0.f) return;
-    s.velocityFix[i] = s.velocity[i] - (p.predicted[i].xyz() - x.xyz()) * (1.f / dt);
+    const Vec3 mean = (p.predicted[i].xyz() - x.xyz()) * (1.f / dt);
+    s.velocityFix[i] = clothEndVelocity(s.velocity[i], mean, speedUpMargin) - mean;
   }, "cloth.substep.finish");
 }
 

@@ -51,6 +51,23 @@ struct ClothSubstepScratch {
 // redo's check, StrainRedo.h); empty for none.
 using SubstepCheck = std::function<void()>;
 
+// The velocity a cloth vertex leaves the step with: its last sub-step's,
+// at most `margin` faster than its mean over the step (0: no limit). The
+// last sub-step's velocity is its last motion over h = dt / count: where
+// contacts and the solve push a vertex back and forth every sub-step (a
+// vertex held between layers), that motion is a fraction of a thickness
+// either way and its velocity grows as the sub-steps shorten, up to 15 m/s
+// in fig6b's folds at 32 sub-steps (5-15 times the vertex's mean speed),
+// where it set the sheet flailing (Doc/model.md, "Cloth sub-steps"). Smooth
+// motion leaves the step at most a dt / 2 faster than its mean under an
+// acceleration a, so the limit only slows vertices that gained more; it
+// never speeds one up.
+SOAK_INLINE Vec3 clothEndVelocity(Vec3 last, Vec3 mean, float margin) {
+  if (margin <= 0.f) return last;
+  const float cap = length(mean) + margin, speed = length(last);
+  return speed > cap ? last * (cap / speed) : last;
+}
+
 // The cloth part of one step in the clock's sub-steps of h = dt / count
 // (Macklin et al. 2019, "Small steps in physics simulation"): each sub-step
 // integrates gravity over h, moves attached vertices along their collider's
@@ -67,7 +84,9 @@ using SubstepCheck = std::function<void()>;
 // sub-steps of n iterations leave far less than one step of K n
 // (Doc/model.md, "Cloth sub-steps"). Writes the cloth's predicted positions
 // and velocityFix, which finalize adds to (x* - x) / dt so that a cloth
-// particle leaves the step with its last sub-step's velocity.
+// particle leaves the step with its last sub-step's velocity, no more than
+// speedUpMargin (m/s; 0: no limit) faster than its mean over the step
+// (Simulation.clothAccelerationLimit).
 // The count is the clock's (SubstepClock.h; written on the device, its
 // `substep` 0): the sub-steps run as a device loop (Backend/DeviceLoop.h),
 // so on the GPU the host need not know it. knownSubsteps: the count where
@@ -77,6 +96,6 @@ using SubstepCheck = std::function<void()>;
 void substepCloth(Device d, ParticleView p, ClothSystem& cloth, const Collider* colliders, int colliderCount,
                   float collisionRadiusScale, Vec3 gravity, SubstepTime t, int knownSubsteps,
                   int iterations, ChebyshevSchedule chebyshev, ClothSubstepScratch scratch,
-                  const ClothContactPasses& contacts, const SubstepCheck& check = {});
+                  const ClothContactPasses& contacts, const SubstepCheck& check = {}, float speedUpMargin = 0.f);
 
 }  // namespace soak

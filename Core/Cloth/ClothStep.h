@@ -22,6 +22,7 @@ struct ClothStepSettings {
   float substepTravel = 0.f; // Simulation.clothSubstepTravel: > 0, sub-steps from the speed (AdaptiveSubsteps.h)
   int maxSubsteps = 1;       // Simulation.clothMaxSubsteps
   bool contactsBySpeed = false;  // Simulation.clothContactsBySpeed
+  float accelerationLimit = 0.f;  // Simulation.clothAccelerationLimit (ClothSolve.h): 0, none
   int strainMaxSubsteps = 0; // Simulation.clothStrainMaxSubsteps: the strain's most; 0: kStrainSubstepsFactor x first
   int strainFirstSubsteps = 0;  // the strain rule's count before it has measured (0: substeps; ClothSolverDefaults.h)
   float strainTarget = 0.f;  // Simulation.clothStrainTarget: > 0 (with substepTravel), sub-steps from the strain (AdaptiveSubsteps.h)

@@ -313,6 +313,14 @@ void registerCoreElements(ModuleRegistry& r) {
                  "evenly, the last always, each testing the path since the one before; the sub-steps that "
                  "clothSubsteps or clothStrainTarget add beyond those serve the solve's convergence alone "
                  "(Doc/model.md, \"Cloth sub-steps\"). false: contact passes in every sub-step.")
+        .real("clothAccelerationLimit", &S::clothAccelerationLimit, "m/s^2",
+              "With cloth sub-steps: a cloth vertex leaves a step with its last sub-step's velocity, but at most "
+              "A x timeStep / 2 faster than its mean velocity over the step (its speed is scaled down, never up): "
+              "smooth motion under an acceleration up to A passes unchanged, while a vertex that contacts and "
+              "the solve push back and forth every sub-step, which moves a fraction of a thickness each way and "
+              "gains a speed that grows with the sub-steps, keeps its mean motion (Doc/model.md, \"Cloth "
+              "sub-steps\"). 0: no limit.",
+              0.0, 1e6)
         .integer("clothStrainMaxSubsteps", &S::clothStrainMaxSubsteps,
                  "The most cloth sub-steps clothStrainTarget raises a step to, within clothMaxSubsteps. 0: 8 times "
                  "the count the rule starts from, clothSubsteps (32 for the solver's own counts, which start at "

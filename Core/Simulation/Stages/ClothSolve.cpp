@@ -11,7 +11,7 @@ void runClothSolve(CoreStageState& state, Simulation& sim) {
   const SimulationSettings& set = sim.settings;
   state.cloth.run(sim.particles.view(), sim.cloth, sim.deviceColliders(), int(sim.colliders.size()),
                   {float(set.timeStep), set.gravity, set.clothSubsteps, set.clothSubstepTravel, set.clothMaxSubsteps,
-                   set.clothContactsBySpeed, set.clothStrainMaxSubsteps, set.clothStrainFirstSubsteps,
+                   set.clothContactsBySpeed, set.clothAccelerationLimit, set.clothStrainMaxSubsteps, set.clothStrainFirstSubsteps,
                    set.clothStrainTarget, set.clothStrainStretchOnly, set.clothStrainRedo, set.clothIterations,
                    {set.clothSpectralRadius, set.clothChebyshevDelay},
                    set.contactPasses, set.crossingGuardRounds, kCollisionRadiusScale, sim.sizeListsNow()});
