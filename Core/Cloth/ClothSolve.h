@@ -58,10 +58,10 @@ using SubstepCheck = std::function<void()>;
 // vertex held between layers), that motion is a fraction of a thickness
 // either way and its velocity grows as the sub-steps shorten, up to 15 m/s
 // in fig6b's folds at 32 sub-steps (5-15 times the vertex's mean speed),
-// where it set the sheet flailing (Doc/model.md, "Cloth sub-steps"). Smooth
-// motion leaves the step at most a dt / 2 faster than its mean under an
-// acceleration a, so the limit only slows vertices that gained more; it
-// never speeds one up.
+// where it set the sheet flailing (Doc/model.md, "The end velocity's
+// limit"). Smooth motion leaves the step at most a dt / 2 faster than its
+// mean under an acceleration a, so the limit only slows vertices that
+// gained more; it never speeds one up.
 SOAK_INLINE Vec3 clothEndVelocity(Vec3 last, Vec3 mean, float margin) {
   if (margin <= 0.f) return last;
   const float cap = length(mean) + margin, speed = length(last);

@@ -7,6 +7,7 @@ void resolveClothSolverCounts(SimulationSettings& s, const ClothModelsUsed& used
   const bool solversSubsteps = s.clothSubsteps <= 0;
   if (s.clothStrainTarget < 0.f) s.clothStrainTarget = solversSubsteps && !used.pbd ? kChebyshevStrainTarget : 0.f;
   const bool strainRule = solversSubsteps && s.clothStrainTarget > 0.f && s.clothSubstepTravel != 0.f;
+  if (s.clothAccelerationLimit < 0.f) s.clothAccelerationLimit = strainRule ? kChebyshevAccelerationLimit : 0.f;
   if (strainRule) {
     // The rule starts at the chebyshev count and may lower it to the fewest.
     s.clothSubsteps = kChebyshevFewestSubsteps;

@@ -318,9 +318,10 @@ void registerCoreElements(ModuleRegistry& r) {
               "A x timeStep / 2 faster than its mean velocity over the step (its speed is scaled down, never up): "
               "smooth motion under an acceleration up to A passes unchanged, while a vertex that contacts and "
               "the solve push back and forth every sub-step, which moves a fraction of a thickness each way and "
-              "gains a speed that grows with the sub-steps, keeps its mean motion (Doc/model.md, \"Cloth "
-              "sub-steps\"). 0: no limit.",
-              0.0, 1e6)
+              "gains a speed that grows with the sub-steps, keeps its mean motion (Doc/model.md, \"The end "
+              "velocity's limit\"). 0: no limit. < 0: the solver's own (200 with the strain rule, where "
+              "clothSubsteps is left to the solver and no cloth is pbd, else 0).",
+              -1.0, 1e6)
         .integer("clothStrainMaxSubsteps", &S::clothStrainMaxSubsteps,
                  "The most cloth sub-steps clothStrainTarget raises a step to, within clothMaxSubsteps. 0: 8 times "
                  "the count the rule starts from, clothSubsteps (32 for the solver's own counts, which start at "

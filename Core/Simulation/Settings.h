@@ -40,7 +40,7 @@ struct SimulationSettings {
   float clothSubstepTravel = -1.f;  // > 0: sub-steps from the cloth's speed (Cloth/AdaptiveSubsteps.h)
   int clothMaxSubsteps = 32;   // the most sub-steps clothSubstepTravel may ask for
   bool clothContactsBySpeed = true;  // contact passes in as many sub-steps as the travel asks for (AdaptiveSubsteps.h)
-  float clothAccelerationLimit = 200.f;  // m/s^2: a sub-stepped cloth vertex leaves a step at most A dt / 2 faster than its mean (Cloth/ClothSolve.h); 0: no limit
+  float clothAccelerationLimit = -1.f;  // m/s^2: a sub-stepped cloth vertex leaves a step at most A dt / 2 faster than its mean (Cloth/ClothSolve.h); 0: no limit; < 0: the solver's own
   int clothStrainMaxSubsteps = 0;  // the most sub-steps the strain asks for; 0: kStrainSubstepsFactor x the first
   // Not a parameter: the strain rule's first count where the solver chose
   // the sub-steps (ClothSolverDefaults.h); 0: clothSubsteps.

@@ -154,3 +154,16 @@ TEST(ClothEndVelocity, CrossedSheetsDoNotJitterFasterWithMoreSubsteps) {
   EXPECT_GT(unlimited, 3.f * eight);
   EXPECT_LT(limited, 2.f * eight);
 }
+
+TEST(ClothEndVelocity, TheSolversOwnCountsTakeTheLimitAndAScenesOwnCountsDoNot) {
+  const std::string sheet = "<Cloth origin='0 1 0' width='0.2' height='0.2' cellsU='4' cellsV='4'/>";
+  const auto limit = [&](const std::string& simulation) {
+    test::TestRegistry reg;
+    return test::makeSimulation("<Scene><Simulation " + simulation + "/>" + sheet + "</Scene>", Device::Cpu, reg)
+        ->settings.clothAccelerationLimit;
+  };
+  EXPECT_EQ(limit(""), 200.f);  // the strain rule's counts reach 32 sub-steps
+  EXPECT_EQ(limit("clothSubsteps='8' clothIterations='12'"), 0.f);  // named counts stay as tuned
+  EXPECT_EQ(limit("clothSubsteps='8' clothAccelerationLimit='300'"), 300.f);
+  EXPECT_EQ(limit("clothAccelerationLimit='0'"), 0.f);
+}
