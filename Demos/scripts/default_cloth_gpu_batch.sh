@@ -15,6 +15,8 @@
 #   runs.txt       worst_strain.py over whole runs, as the scenes are (r_) and with the default counts (d_)
 #   fig6b_*.csv    fig6b_emission with the default counts: stats.csv of each variant (part fig6b)
 # `all` runs tests, bench, runs and scale in that order; fig6b runs only when named.
+# EXTRA (environment): options added to every run and bench, e.g.
+# EXTRA="--set Simulation.clothSpectralRadius=0.9".
 set -u
 bundle=$(cd "${1:?usage: $0 BUNDLE [part]}" && pwd)
 part=${2:-all}
@@ -25,6 +27,7 @@ work=$(mktemp -d)
 run() { "$bundle/run" "$@"; }
 worst() { python3 "$repo/Demos/scripts/worst_strain.py" "$@"; }
 DEF="--set Simulation.clothSubsteps=0 --set Simulation.clothIterations=0 --set Simulation.clothSubstepTravel=-1 --set Simulation.clothStrainTarget=-1"
+X=${EXTRA:-}
 want() { [ "$part" = all ] || [ "$part" = "$1" ]; }
 log() { echo "== $* $(date +%T)" >> "$out/gpu.txt"; }
 cd "$(run --data)"  # the bundle's Scenes/
@@ -40,8 +43,8 @@ fi
 if want bench; then
   for round in 1 2; do
     log "bench round $round"
-    run soak-bench --device cuda --scenes Scenes > "$out/bench_named_$round.txt" 2>&1
-    run soak-bench --device cuda --scenes Scenes $DEF > "$out/bench_def_$round.txt" 2>&1
+    run soak-bench --device cuda --scenes Scenes $X > "$out/bench_named_$round.txt" 2>&1
+    run soak-bench --device cuda --scenes Scenes $DEF $X > "$out/bench_def_$round.txt" 2>&1
   done
 fi
 
@@ -50,7 +53,7 @@ run_all() {
   local i=0 s o a
   for j in "$@"; do
     IFS='|' read -r s o a <<< "$j"
-    ( run soak run "$s" --device cuda -o "$work/$o" --overwrite --quiet $a > "$work/$o.log" 2>&1
+    ( run soak run "$s" --device cuda -o "$work/$o" --overwrite --quiet $a $X > "$work/$o.log" 2>&1
       echo "$o rc=$?" >> "$out/gpu.txt" ) &
     i=$((i + 1)); [ $((i % 4)) -eq 0 ] && wait
   done
@@ -90,7 +93,7 @@ if want scale; then
   run soak-bench --scale 100k,1M --write-scale-scenes "$work/sc" > /dev/null 2>&1
   run_all "$work/sc/scale_100k.xml|r_scale100k|--time 2" "$work/sc/scale_1M.xml|r_scale1M|--time 1.5"
   worst "$work/r_scale100k/" "$work/r_scale1M/" >> "$out/runs.txt" 2>&1
-  run soak-bench --device cuda --no-table2 --scale 100k,1M > "$out/bench_scale.txt" 2>&1
+  run soak-bench --device cuda --no-table2 --scale 100k,1M $X > "$out/bench_scale.txt" 2>&1
 fi
 
 if [ "$part" = fig6b ]; then
@@ -107,8 +110,8 @@ if [ "$part" = fig6b ]; then
   # Its cost over 500 steps rather than the bench's 50, three rounds alternated (the scene's counts, then the default's).
   log "fig6b bench"
   for round in 1 2 3; do
-    run soak-bench --device cuda --scenes Scenes --only fig6b_emission --steps 500 2>&1 | grep "^| fig6b" >> "$out/gpu.txt"
-    run soak-bench --device cuda --scenes Scenes --only fig6b_emission --steps 500 $DEF 2>&1 | grep "^| fig6b" >> "$out/gpu.txt"
+    run soak-bench --device cuda --scenes Scenes --only fig6b_emission --steps 500 $X 2>&1 | grep "^| fig6b" >> "$out/gpu.txt"
+    run soak-bench --device cuda --scenes Scenes --only fig6b_emission --steps 500 $DEF $X 2>&1 | grep "^| fig6b" >> "$out/gpu.txt"
   done
 fi
 log done
