@@ -106,7 +106,7 @@ void ClothStep::run(ParticleView p, ClothSystem& cloth, const Collider* collider
                s.chebyshev,
                {substepStart_.data(), substepVelocity_.data(), velocityFix_.data(), contactStart_.data(),
                 redo ? firstVelocity_.data() : nullptr},
-               contacts, check, s.accelerationLimit > 0.f ? 0.5f * s.accelerationLimit * s.dt : 0.f);
+               contacts, check, 0.5f * s.accelerationLimit * s.dt);
 }
 
 }  // namespace soak

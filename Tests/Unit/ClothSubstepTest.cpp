@@ -120,7 +120,7 @@ namespace {
 // row of the vertical sheet that lies in the other's plane is pushed out of
 // it by the contacts and pulled back by its own constraints in every
 // sub-step, the fight two layers that have passed through each other keep
-// up (Doc/model.md, "Cloth sub-steps").
+// up (Doc/model.md, "The end velocity's limit").
 float fastestVertexOfCrossedSheets(int substeps, float accelerationLimit) {
   test::TestRegistry reg;
   auto sim = test::makeSimulation(
